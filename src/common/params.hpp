@@ -1,0 +1,66 @@
+// Declarative parameter binding shared by every model library and node.
+//
+// A model declares its parameters once (key, reference to the field, unit, allowed range, doc):
+//
+//   void declare(hbt::ParamSet& ps) {
+//     ps.add("mass_kg", mass_kg, "kg", 1000.0, 60000.0, "curb mass");
+//   }
+//
+// and a ParamSource (a flat key -> value map, filled from rosparam by the node or directly by a
+// test) is applied with hbt::applyParams(). Errors name the source file and the key: a missing
+// required key, a value of the wrong type, NaN/inf, a value out of range, and any key present
+// in the source that the model does not know (typos must not be ignored silently).
+#pragma once
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace hbt {
+
+using ParamValue = std::variant<bool, double, std::string, std::vector<double>>;
+
+/// Flat map "group/key" -> value, plus the file it came from (for error messages).
+struct ParamSource {
+  std::string file = "(parameters)";
+  std::map<std::string, ParamValue> values;
+  void set(const std::string& key, ParamValue v) { values[key] = std::move(v); }
+};
+
+class ParamSet {
+ public:
+  /// Required unless `optional` (then the field's current value is the default).
+  void add(const std::string& key, double& ref, const std::string& unit, double min, double max,
+           const std::string& doc, bool optional = true);
+  void add(const std::string& key, bool& ref, const std::string& doc, bool optional = true);
+  void add(const std::string& key, std::string& ref, const std::string& doc, bool optional = true);
+  void add(const std::string& key, std::vector<double>& ref, const std::string& unit, double min,
+           double max, const std::string& doc, bool optional = true);
+  void add(const std::string& key, int& ref, const std::string& unit, int min, int max,
+           const std::string& doc, bool optional = true);
+
+  /// Prefix prepended to keys added afterwards ("vehicle/" ...); "" to clear.
+  void setPrefix(const std::string& prefix) { prefix_ = prefix; }
+
+  struct Entry {
+    std::string key, unit, doc;
+    std::variant<double*, bool*, std::string*, std::vector<double>*, int*> ref;
+    double min = 0.0, max = 0.0;
+    bool optional = true;
+  };
+  const std::vector<Entry>& entries() const { return entries_; }
+
+ private:
+  std::string prefix_;
+  std::vector<Entry> entries_;
+};
+
+/// Applies `src` to the declared fields. Keys of `src` that start with one of `ignore_prefixes`
+/// are not reported as unknown (e.g. parameters consumed by the node itself). Throws InputError.
+void applyParams(const ParamSet& ps, const ParamSource& src,
+                 const std::vector<std::string>& ignore_prefixes = {});
+
+/// One line per parameter: "key [unit] = value  # doc" (for --help output and reports).
+std::string describeParams(const ParamSet& ps);
+
+}  // namespace hbt

@@ -1,0 +1,20 @@
+// Unit conversions used only at the edges (SI inside every model).
+#pragma once
+
+namespace hbt::units {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kZeroCelsius_K = 273.15;
+constexpr double kKmh_per_mps = 3.6;
+constexpr double kRadps_per_rpm = 2.0 * kPi / 60.0;
+constexpr double kJ_per_kWh = 3.6e6;
+constexpr double kGravity_m_s2 = 9.81;  // VECTO uses 9.81 m/s^2
+
+constexpr double rpmToRadps(double rpm) { return rpm * kRadps_per_rpm; }
+constexpr double radpsToRpm(double w_rad_s) { return w_rad_s / kRadps_per_rpm; }
+constexpr double kmhToMps(double v_kmh) { return v_kmh / kKmh_per_mps; }
+constexpr double mpsToKmh(double v_m_s) { return v_m_s * kKmh_per_mps; }
+constexpr double celsiusToK(double t_c) { return t_c + kZeroCelsius_K; }
+constexpr double kToCelsius(double t_k) { return t_k - kZeroCelsius_K; }
+
+}  // namespace hbt::units

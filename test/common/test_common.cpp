@@ -1,0 +1,126 @@
+// Tests of the shared helpers: CSV reader errors name file and key; Table1D interpolation is
+// exact on linear data; PID anti-windup keeps the integral bounded under saturation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "common/csv_table.hpp"
+#include "common/errors.hpp"
+#include "common/pid.hpp"
+#include "common/table1d.hpp"
+
+namespace {
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+}  // namespace
+
+TEST(CsvTable, ReadsVectoHeaderAndComments) {
+  const auto p = writeTemp("ok.csv", "# comment\n<s>,<v> [km/h],<grad>\n0,0,1.5\n10,20,-2\n");
+  const auto t = hbt::CsvTable::read(p);
+  EXPECT_EQ(t.rows(), 2u);
+  EXPECT_DOUBLE_EQ(t.column("v")[1], 20.0);
+  EXPECT_DOUBLE_EQ(t.column("<grad>")[1], -2.0);
+}
+
+TEST(CsvTable, MissingFileNamesFile) {
+  try {
+    hbt::CsvTable::read("/nonexistent/cycle.vdri");
+    FAIL();
+  } catch (const hbt::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/cycle.vdri"), std::string::npos);
+  }
+}
+
+TEST(CsvTable, NanCellNamesColumnAndLine) {
+  const auto p = writeTemp("nan.csv", "<s>,<v>\n0,1\n5,nan\n");
+  try {
+    hbt::CsvTable::read(p);
+    FAIL();
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.key(), "v");
+    EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos);
+  }
+}
+
+TEST(CsvTable, TruncatedRowIsRejected) {
+  const auto p = writeTemp("trunc.csv", "<s>,<v>,<grad>\n0,1,0\n5,2\n");
+  EXPECT_THROW(hbt::CsvTable::read(p), hbt::InputError);
+}
+
+TEST(CsvTable, MissingColumnNamesKey) {
+  const auto p = writeTemp("col.csv", "a,b\n1,2\n");
+  const auto t = hbt::CsvTable::read(p);
+  try {
+    t.column("stop");
+    FAIL();
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.key(), "stop");
+  }
+}
+
+TEST(Table1D, ExactOnLinearDataAndClamped) {
+  hbt::Table1D t({0.0, 1.0, 3.0}, {1.0, 3.0, 7.0});
+  EXPECT_DOUBLE_EQ(t(0.5), 2.0);
+  EXPECT_DOUBLE_EQ(t(2.0), 5.0);
+  EXPECT_DOUBLE_EQ(t(-1.0), 1.0);
+  EXPECT_DOUBLE_EQ(t(4.0), 7.0);
+  EXPECT_DOUBLE_EQ(t.extrapolated(4.0), 9.0);
+  EXPECT_THROW(hbt::Table1D({0.0, 0.0}, {1.0, 2.0}), hbt::InputError);
+}
+
+TEST(Pid, ConvergesOnFirstOrderPlantAndAntiWindup) {
+  // Plant dy/dt = (u - y)/tau; PI must bring y to the set point; saturation must not wind up.
+  hbt::Pid pid({2.0, 4.0, 0.0, -1.0, 1.0});
+  double y = 0.0;
+  const double dt = 0.01, tau = 0.5, r = 0.5;
+  for (int k = 0; k < 2000; ++k) {
+    const double u = pid.update(r - y, dt);
+    y += dt * (u - y) / tau;
+  }
+  EXPECT_NEAR(y, r, 1e-6);
+  hbt::Pid sat({1.0, 1.0, 0.0, -1.0, 1.0});
+  for (int k = 0; k < 10000; ++k) sat.update(10.0, dt);  // unreachable set point
+  EXPECT_LT(sat.integral(), 1.0);
+}
+
+#include "common/params.hpp"
+
+TEST(Params, AppliesValuesAndNamesBadKeys) {
+  double mass_kg = 15160.0;
+  std::string cycle = "Urban";
+  hbt::ParamSet ps;
+  ps.add("mass_kg", mass_kg, "kg", 1000.0, 60000.0, "curb mass");
+  ps.add("cycle", cycle, "mission");
+  hbt::ParamSource src;
+  src.file = "config/vehicle.yaml";
+  src.set("mass_kg", 16000.0);
+  hbt::applyParams(ps, src);
+  EXPECT_DOUBLE_EQ(mass_kg, 16000.0);
+
+  src.set("mass_kg", -5.0);  // negative mass
+  try {
+    hbt::applyParams(ps, src);
+    FAIL();
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.key(), "mass_kg");
+    EXPECT_EQ(e.file(), "config/vehicle.yaml");
+  }
+  src.set("mass_kg", std::nan(""));
+  EXPECT_THROW(hbt::applyParams(ps, src), hbt::InputError);
+  src.set("mass_kg", 16000.0);
+  src.set("mas_kg", 1.0);  // typo -> unknown key
+  try {
+    hbt::applyParams(ps, src);
+    FAIL();
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.key(), "mas_kg");
+  }
+  EXPECT_NO_THROW(hbt::applyParams(ps, src, {"mas_"}));
+}
