@@ -1,0 +1,17 @@
+// Nodelet forms of the stepper and the recorder (mode:=nodelets).
+#include "cosim/participant_main.hpp"
+#include "cosim/recorder.hpp"
+#include "cosim/stepper.hpp"
+
+HBT_PARTICIPANT_NODELET(hbt::cosim::Recorder, RecorderNodelet)
+
+namespace hbt::nodelets {
+class StepperNodelet : public nodelet::Nodelet {
+  void onInit() override {
+    stepper_ = std::make_unique<hbt::cosim::Stepper>(getNodeHandle(), getPrivateNodeHandle());
+    stepper_->start();
+  }
+  std::unique_ptr<hbt::cosim::Stepper> stepper_;
+};
+}  // namespace hbt::nodelets
+PLUGINLIB_EXPORT_CLASS(hbt::nodelets::StepperNodelet, nodelet::Nodelet)

@@ -1,0 +1,49 @@
+#include "cosim/param_loader.hpp"
+
+#include "common/errors.hpp"
+
+namespace hbt::cosim {
+namespace {
+
+void flatten(const XmlRpc::XmlRpcValue& v, const std::string& key, ParamSource& out) {
+  using X = XmlRpc::XmlRpcValue;
+  switch (v.getType()) {
+    case X::TypeStruct:
+      for (auto it = v.begin(); it != v.end(); ++it)
+        flatten(it->second, key.empty() ? it->first : key + "/" + it->first, out);
+      return;
+    case X::TypeBoolean: out.set(key, static_cast<bool>(const_cast<X&>(v))); return;
+    case X::TypeInt: out.set(key, static_cast<double>(static_cast<int>(const_cast<X&>(v)))); return;
+    case X::TypeDouble: out.set(key, static_cast<double>(const_cast<X&>(v))); return;
+    case X::TypeString: out.set(key, static_cast<std::string>(const_cast<X&>(v))); return;
+    case X::TypeArray: {
+      std::vector<double> vec;
+      for (int i = 0; i < v.size(); ++i) {
+        X e = v[i];
+        if (e.getType() == X::TypeInt) vec.push_back(static_cast<int>(e));
+        else if (e.getType() == X::TypeDouble) vec.push_back(static_cast<double>(e));
+        else throw InputError(out.file, key, "list element " + std::to_string(i) + " is not a number");
+      }
+      out.set(key, vec);
+      return;
+    }
+    default: throw InputError(out.file, key, "unsupported parameter type");
+  }
+}
+
+}  // namespace
+
+ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
+                            const std::string& file) {
+  ParamSource src;
+  src.file = file;
+  XmlRpc::XmlRpcValue v;
+  const std::string ns = group.empty() ? nh.getNamespace() : nh.resolveName(group);
+  if (!nh.getParam(ns, v)) return src;  // nothing set: defaults apply
+  if (v.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+    throw InputError(file, group, "expected a group of parameters");
+  flatten(v, "", src);
+  return src;
+}
+
+}  // namespace hbt::cosim

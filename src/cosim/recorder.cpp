@@ -1,0 +1,86 @@
+#include "cosim/recorder.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "common/errors.hpp"
+
+namespace hbt::cosim {
+
+/// Type-erased input buffered by the header stamp read from the serialized message
+/// (every message of the twin starts with std_msgs/Header: seq, stamp.sec, stamp.nsec).
+class Recorder::RawInput : public InputBase {
+ public:
+  using Ptr = topic_tools::ShapeShifter::ConstPtr;
+  RawInput(ros::NodeHandle& nh, const std::string& topic, std::function<void()> cb)
+      : InputBase(topic), cb_(std::move(cb)) {
+    sub_ = nh.subscribe<topic_tools::ShapeShifter>(topic, 1000, &RawInput::callback, this,
+                                                   ros::TransportHints().tcpNoDelay());
+  }
+  bool has(const ros::Time& t) const override { return buf_.count(t) > 0; }
+  const Ptr& at(const ros::Time& t) const { return buf_.at(t); }
+  void dropBefore(const ros::Time& t) override { buf_.erase(buf_.begin(), buf_.lower_bound(t)); }
+  uint32_t numPublishers() const override { return sub_.getNumPublishers(); }
+
+ private:
+  void callback(const Ptr& msg) {
+    const uint32_t n = msg->size();
+    if (n < 12) return;  // no header: not a twin message
+    bytes_.resize(n);
+    ros::serialization::OStream s(bytes_.data(), n);
+    msg->write(s);
+    uint32_t sec = 0, nsec = 0;
+    std::memcpy(&sec, bytes_.data() + 4, 4);
+    std::memcpy(&nsec, bytes_.data() + 8, 4);
+    buf_[ros::Time(sec, nsec)] = msg;
+    cb_();
+  }
+  ros::Subscriber sub_;
+  std::map<ros::Time, Ptr> buf_;
+  std::vector<uint8_t> bytes_;
+  std::function<void()> cb_;
+};
+
+void Recorder::configure() {
+  std::string bag_file;
+  std::vector<std::string> topics;
+  const std::string where = "recorder parameters (launch file)";
+  if (!pnh_.getParam("bag_file", bag_file) || bag_file.empty())
+    throw InputError(where, "bag_file", "missing");
+  if (!pnh_.getParam("topics", topics) || topics.empty())
+    throw InputError(where, "topics", "missing or empty list");
+  std::sort(topics.begin(), topics.end());
+  bag_ = std::make_unique<rosbag::Bag>();
+  try {
+    bag_->open(bag_file, rosbag::bagmode::Write);
+  } catch (const std::exception& e) {
+    throw InputError(where, "bag_file", std::string("cannot open '") + bag_file + "': " + e.what());
+  }
+  for (const auto& t : topics) {
+    auto in = std::make_unique<RawInput>(nh_, t, arrivalCallback());
+    topics_.push_back(in.get());
+    addCustomInput(std::move(in));
+  }
+}
+
+void Recorder::writeAt(const ros::Time& t) {
+  const ros::Time bag_t = t.isZero() ? ros::Time(0, 1) : t;  // rosbag refuses time 0
+  for (RawInput* in : topics_) bag_->write(in->topic(), bag_t, in->at(t));
+  last_written_ = t;
+  wrote_any_ = true;
+}
+
+bool Recorder::readyToClose(const ros::Time& t_end) const {
+  for (RawInput* in : topics_)
+    if (!in->has(t_end)) return false;
+  return true;
+}
+
+void Recorder::close(const ros::Time& t_end, bool aborted) {
+  if (!bag_) return;
+  if (!aborted && (!wrote_any_ || last_written_ < t_end) && readyToClose(t_end)) writeAt(t_end);
+  bag_->close();
+  bag_.reset();
+}
+
+}  // namespace hbt::cosim

@@ -1,0 +1,44 @@
+// Recorder participant: writes every output topic of the run to a rosbag, in lock-step.
+//
+// At step k it waits until each recorded topic has its message stamped t_k and writes them in a
+// fixed (sorted) topic order with bag time = header.stamp, so two runs of one scenario give
+// identical bag contents. At FINISH it waits for the final outputs (stamped t_end), writes them
+// and closes the bag; at ABORT it writes what is complete and closes the bag, which stays
+// readable. Topics are recorded type-erased (topic_tools::ShapeShifter), so the recorder does not
+// depend on the message types.
+//
+// Parameters (private): bag_file [path], topics [list of topic names].
+#pragma once
+#include <rosbag/bag.h>
+#include <topic_tools/shape_shifter.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cosim/participant.hpp"
+
+namespace hbt::cosim {
+
+class Recorder : public Participant {
+ public:
+  Recorder(ros::NodeHandle nh, ros::NodeHandle pnh) : Participant(nh, pnh) {}
+
+ protected:
+  void configure() override;
+  void publishOutputs(const ros::Time& t) override {}
+  void step(const ros::Time& t, double dt_s) override { writeAt(t); }
+  bool readyToClose(const ros::Time& t_end) const override;
+  void close(const ros::Time& t_end, bool aborted) override;
+
+ private:
+  class RawInput;
+  void writeAt(const ros::Time& t);
+  std::unique_ptr<rosbag::Bag> bag_;
+  std::vector<RawInput*> topics_;  // sorted by name; owned by the participant base
+  ros::Time last_written_;
+  bool wrote_any_ = false;
+};
+
+}  // namespace hbt::cosim

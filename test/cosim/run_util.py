@@ -1,0 +1,68 @@
+"""Helpers for the ROS-level tests: run a launch file in its own roslaunch (own master on a free
+port), read the status file and bags written by a run."""
+import json
+import os
+import signal
+import socket
+import subprocess
+import time
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def start_launch(launch_file, out_dir, **args):
+    """Starts roslaunch on a private master; returns the Popen (its own process group)."""
+    os.makedirs(out_dir, exist_ok=True)
+    port = free_port()
+    env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_HOME=out_dir)
+    cmd = ["roslaunch", "--no-summary", "-p", str(port), launch_file, "out:=" + out_dir]
+    cmd += ["%s:=%s" % (k, v) for k, v in args.items()]
+    with open(os.path.join(out_dir, "roslaunch.log"), "w") as log:
+        return subprocess.Popen(cmd, env=env, stdout=log, stderr=subprocess.STDOUT,
+                                start_new_session=True)
+
+
+def wait(proc, timeout_s):
+    try:
+        return proc.wait(timeout=timeout_s)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGINT)
+        proc.wait(timeout=20)
+        raise
+
+
+def run_launch(launch_file, out_dir, timeout_s=300, **args):
+    proc = start_launch(launch_file, out_dir, **args)
+    wait(proc, timeout_s)
+    return read_status(out_dir)
+
+
+def read_status(out_dir):
+    with open(os.path.join(out_dir, "status.json")) as f:
+        return json.load(f)
+
+
+def bag_messages(bag_path):
+    """[(topic, stamp_ns, serialized bytes)] in bag order."""
+    import rosbag
+    out = []
+    with rosbag.Bag(bag_path) as bag:
+        for topic, raw, t in bag.read_messages(raw=True):
+            out.append((topic, t.to_nsec(), bytes(raw[1])))
+    return out
+
+
+def pid_of_node(name, timeout_s=30.0):
+    """PID of the process started with __name:=<name>."""
+    t0 = time.time()
+    while time.time() - t0 < timeout_s:
+        r = subprocess.run(["pgrep", "-f", "__name:=%s( |$)" % name], capture_output=True, text=True)
+        pids = [int(p) for p in r.stdout.split()]
+        if pids:
+            return pids[0]
+        time.sleep(0.1)
+    raise RuntimeError("node %s not found" % name)
