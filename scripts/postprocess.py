@@ -1,0 +1,197 @@
+#!/usr/bin/env python3
+"""Results of one run of the twin: DIR/summary.json, DIR/report.md and PNG plots, computed from
+DIR/run.bag (analysed by header.stamp) and DIR/status.json (written by the master stepper).
+
+Usage: postprocess.py DIR --scenario NAME [name:=value ...]   (the launch arguments of the run)
+Exit status: 0 if the run completed, 1 if it was aborted (the message names the failing node).
+
+Fuel: diesel, density 0.835 kg/L at 15 degC (EN 590 allows 0.820-0.845; VECTO's reference fuel
+B7 has 0.836 kg/L), lower heating value 42.7 MJ/kg (VECTO declaration value for diesel B7).
+"""
+import argparse
+import json
+import math
+import os
+import sys
+
+import numpy as np
+
+DIESEL_DENSITY_KG_L = 0.835
+J_PER_KWH = 3.6e6
+
+
+def read_bag(path):
+    """{topic: {field: np.array}} with 't' = header.stamp [s]; numeric fields only."""
+    import rosbag
+    data = {}
+    with rosbag.Bag(path) as bag:
+        for topic, msg, _ in bag.read_messages():
+            d = data.setdefault(topic, {"t": []})
+            d["t"].append(msg.header.stamp.to_sec())
+            for f in msg.__slots__:
+                v = getattr(msg, f)
+                if isinstance(v, bool):
+                    v = float(v)
+                if isinstance(v, (int, float)):
+                    d.setdefault(f, []).append(float(v))
+    return {k: {f: np.asarray(v) for f, v in d.items()} for k, d in data.items()}
+
+
+def launch_args(pairs):
+    out = {}
+    for p in pairs:
+        k, _, v = p.partition(":=")
+        out[k] = v
+    return out
+
+
+def stops_served(veh, stops_path):
+    """Stops of the mission (from the profile written by the vehicle node) at which the bus
+    stood still (< 0.5 km/h) within 10 m of the stop position."""
+    if not os.path.exists(stops_path):
+        return None, None
+    stops = np.loadtxt(stops_path, delimiter=",", skiprows=1, ndmin=2)
+    if stops.size == 0:
+        return 0, 0
+    still = veh["speed_m_s"] < 0.5 / 3.6
+    s_still = veh["distance_m"][still]
+    t_end = veh["t"][-1]
+    served, total = 0, 0
+    for pos, t_expected in zip(stops[:, 0], stops[:, 1]):
+        if t_expected > t_end:  # beyond the simulated stretch (until:=)
+            continue
+        total += 1
+        if s_still.size and np.min(np.abs(s_still - pos)) < 10.0:
+            served += 1
+    return served, total
+
+
+def summarise(out, scenario, args, status, data):
+    veh = data.get("/vehicle/state")
+    eng = data.get("/engine/state")
+    s = {
+        "scenario": scenario,
+        "architecture": args.get("architecture", "conventional"),
+        "engine_model": args.get("engine", "map"),
+        "ambient_c": float(args.get("ambient", 25.0)),
+        "macro_step_s": status["macro_step_s"],
+        "sim_time_s": status["sim_time_s"],
+        "wall_time_s": status["wall_time_s"],
+    }
+    if veh is None or eng is None:
+        return s
+    dist_m = veh["distance_m"][-1]
+    fuel_kg = eng["fuel_mass_kg"][-1]
+    err = (veh["speed_m_s"] - veh["target_speed_m_s"]) * 3.6
+    s.update({
+        "distance_km": dist_m / 1000.0,
+        "fuel_kg": fuel_kg,
+        "fuel_l_per_100km": fuel_kg / DIESEL_DENSITY_KG_L / (dist_m / 1e5) if dist_m > 0 else None,
+        "engine_positive_kwh": veh["engine_positive_work_j"][-1] / J_PER_KWH,
+        "engine_motoring_kwh": veh["engine_motoring_work_j"][-1] / J_PER_KWH,
+        "speed_rmse_kmh": float(np.sqrt(np.mean(err ** 2))),
+        "aux_kwh": veh["aux_work_j"][-1] / J_PER_KWH,
+    })
+    served, total = stops_served(veh, os.path.join(out, "stops.csv"))
+    if total is not None:
+        s["stops_served"], s["stops_total"] = served, total
+    exh = data.get("/engine/exhaust")
+    if exh is not None and "nox_mass_kg" in exh and args.get("engine", "map") == "1d":
+        s["nox_engine_out_g"] = exh["nox_mass_kg"][-1] * 1000.0
+    return s
+
+
+def plots(out, data):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    veh, eng = data.get("/vehicle/state"), data.get("/engine/state")
+    if veh is None or eng is None:
+        return []
+    files = []
+
+    def save(fig, name):
+        fig.tight_layout()
+        p = os.path.join(out, name)
+        fig.savefig(p, dpi=110)
+        plt.close(fig)
+        files.append(name)
+
+    fig, ax = plt.subplots(figsize=(12, 4))
+    ax.plot(veh["t"], veh["target_speed_m_s"] * 3.6, label="target", lw=0.8)
+    ax.plot(veh["t"], veh["speed_m_s"] * 3.6, label="actual", lw=0.8)
+    ax.set(xlabel="time [s]", ylabel="speed [km/h]", title="Vehicle speed: target vs actual")
+    ax.legend()
+    save(fig, "speed.png")
+
+    fig, ax = plt.subplots(figsize=(12, 3))
+    ax.step(veh["t"], veh["gear"], where="post", lw=0.8)
+    ax.set(xlabel="time [s]", ylabel="gear [-]", title="Engaged gear")
+    save(fig, "gear.png")
+
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(12, 6), sharex=True)
+    a1.plot(eng["t"], eng["engine_speed_rad_s"] * 60 / (2 * math.pi), lw=0.6)
+    a1.set(ylabel="engine speed [rpm]")
+    a2.plot(eng["t"], eng["brake_torque_nm"], lw=0.6)
+    a2.set(xlabel="time [s]", ylabel="brake torque [Nm]")
+    a1.set_title("Engine speed and torque")
+    save(fig, "engine.png")
+
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(12, 6), sharex=True)
+    a1.plot(eng["t"], eng["fuel_mass_flow_kg_s"] * 3.6e6, lw=0.6)
+    a1.set(ylabel="fuel rate [g/h]")
+    a2.plot(eng["t"], eng["fuel_mass_kg"], lw=0.8)
+    a2.set(xlabel="time [s]", ylabel="cumulative fuel [kg]")
+    a1.set_title("Fuel")
+    save(fig, "fuel.png")
+    return files
+
+
+def report(out, s, status, files):
+    lines = ["# Run report: %s" % s["scenario"], ""]
+    lines.append("Status: **%s**%s" % (status["status"], (" - " + status["message"]) if status["message"] else ""))
+    lines.append("")
+    lines.append("| quantity | value |")
+    lines.append("|---|---|")
+    for k, v in s.items():
+        lines.append("| %s | %s |" % (k, ("%.6g" % v) if isinstance(v, float) else v))
+    lines.append("")
+    if s.get("sim_time_s"):
+        lines.append("Wall/simulated time ratio: %.4f" % (s["wall_time_s"] / s["sim_time_s"]))
+    lines.append("")
+    lines.append("CPU time per participant [s]: " + ", ".join(
+        "%s %.2f" % kv for kv in sorted(status.get("cpu_time_s", {}).items())))
+    lines.append("")
+    lines.append("Fuel density %.3f kg/L (diesel). Data: bag `run.bag` (analyse by header.stamp)." % DIESEL_DENSITY_KG_L)
+    lines.append("")
+    for f in files:
+        lines.append("![%s](%s)" % (f, f))
+    with open(os.path.join(out, "report.md"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("out")
+    ap.add_argument("--scenario", required=True)
+    ap.add_argument("args", nargs="*", help="launch arguments name:=value")
+    a = ap.parse_args()
+    status = json.load(open(os.path.join(a.out, "status.json")))
+    bag = os.path.join(a.out, "run.bag")
+    data = read_bag(bag) if os.path.exists(bag) else {}
+    s = summarise(a.out, a.scenario, launch_args(a.args), status, data)
+    with open(os.path.join(a.out, "summary.json"), "w") as fh:
+        json.dump(s, fh, indent=2)
+        fh.write("\n")
+    files = plots(a.out, data)
+    report(a.out, s, status, files)
+    if status["status"] != "ok":
+        print("twin: run FAILED: %s" % status["message"], file=sys.stderr)
+        return 1
+    print("twin: done: %s" % ", ".join("%s=%s" % (k, ("%.4g" % v) if isinstance(v, float) else v)
+                                      for k, v in s.items()))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
