@@ -1,0 +1,73 @@
+// Pipe-end boundaries (see characteristics.hpp for the face relations they use).
+//   ClosedEnd   u = 0 at the face; flux (0, p_b A, 0), p_b the reflected wall pressure.
+//   OpenEnd     pipe end open to a Volume (reservoir, plenum or volume-based junction): inflow
+//               isentropic from the volume's state taken as total (p, T), outflow at the volume's
+//               static pressure; subsonic or choked. Any number of OpenEnds may share one Volume
+//               (N-pipe plenum / junction); the volume receives exactly minus the pipe flux.
+//   Valve       orifice between a Volume and a pipe end, effective area from an AreaProvider
+//               (Forward = from the volume into the pipe), isentropic nozzle (choked/subsonic) +
+//               characteristic of the pipe end solved together; both directions.
+//   PipeOrifice orifice between two pipe ends (Forward = pipe A -> pipe B): mass flow from the
+//               nozzle equation between the upstream end brought to rest (p0, T0) and the
+//               downstream end's wall pressure (quasi-steady, explicit); both ends then get faces
+//               carrying that same mass flow and total enthalpy, so mass and energy are conserved.
+#pragma once
+#include <memory>
+
+#include "gasdyn/area_provider.hpp"
+#include "gasdyn/boundary.hpp"
+#include "gasdyn/characteristics.hpp"
+#include "gasdyn/volume.hpp"
+
+namespace hbt::gasdyn {
+
+class ClosedEnd final : public Boundary {
+ public:
+  ClosedEnd(std::string name, PipeEnd end);
+  void computeFluxes(double t) override;
+
+ private:
+  PipeEnd end_;
+};
+
+class OpenEnd final : public Boundary {
+ public:
+  OpenEnd(std::string name, PipeEnd end, Volume& volume);
+  void computeFluxes(double t) override;
+  double massFlowIn() const { return mdot_; }  // last mass flow into the pipe [kg/s]
+
+ private:
+  PipeEnd end_;
+  Volume& vol_;
+  double mdot_ = 0.0;
+};
+
+class Valve final : public Boundary {
+ public:
+  Valve(std::string name, Volume& volume, PipeEnd end, std::shared_ptr<const AreaProvider> area);
+  void computeFluxes(double t) override;
+  double massFlowIn() const { return mdot_; }  // last mass flow volume -> pipe [kg/s]
+
+ private:
+  Volume& vol_;
+  PipeEnd end_;
+  std::shared_ptr<const AreaProvider> area_;
+  double mdot_ = 0.0;
+};
+
+class PipeOrifice final : public Boundary {
+ public:
+  PipeOrifice(std::string name, PipeEnd a, PipeEnd b, std::shared_ptr<const AreaProvider> area);
+  void computeFluxes(double t) override;
+  double massFlowAtoB() const { return mdot_; }  // [kg/s]
+
+ private:
+  PipeEnd a_, b_;
+  std::shared_ptr<const AreaProvider> area_;
+  double mdot_ = 0.0;
+};
+
+/// Connects a face state to its pipe end and (with the opposite sign) to a volume; returns mdot_in.
+double applyFace(const FaceState& f, const PipeEnd& end, Volume* vol);
+
+}  // namespace hbt::gasdyn

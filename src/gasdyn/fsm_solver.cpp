@@ -1,0 +1,173 @@
+#include "gasdyn/fsm_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hbt::gasdyn {
+
+namespace {
+constexpr double kHuge = 1e300;
+}
+
+FsmSolver::FsmSolver(const PerfectGas& gas, const PipeConfig& cfg, const PipeGeometry& geo)
+    : gas_(gas), cfg_(cfg), geo_(geo), n_(geo.n) {
+  for (auto* v : {&rho_, &E_, &p_, &u_, &c_, &h0_, &mom_, &pq_, &u_init_}) v->assign(n_, 0.0);
+  m_.assign(n_ + 1, 0.0);
+  uf_.assign(n_ + 1, 0.0);
+  for (int i = 0; i < n_; ++i) setState(i, 1.2, 0.0, 1e5);
+}
+
+void FsmSolver::setState(int i, double rho, double u, double p) {
+  rho_[i] = rho;
+  u_init_[i] = u;
+  E_[i] = p / (gas_.gamma - 1.0) + 0.5 * rho * u * u;
+  // ports next to the cell: mean of the neighbouring cell momenta (ends: the cell's own)
+  for (int j = i; j <= i + 1; ++j) {
+    const int l = std::max(j - 1, 0), r = std::min(j, n_ - 1);
+    m_[j] = 0.5 * (rho_[l] * u_init_[l] + rho_[r] * u_init_[r]) * geo_.A_face[j];
+  }
+  for (int k = std::max(i - 1, 0); k <= std::min(i + 1, n_ - 1); ++k) {
+    updatePrimitives(k);
+  }
+  max_speed_ = 0.0;
+  for (int k = 0; k < n_; ++k) max_speed_ = std::max(max_speed_, std::abs(u_[k]) + c_[k]);
+}
+
+void FsmSolver::updatePrimitives(int i) {
+  const double r = rho_[i];
+  const double u = 0.5 * (faceVelocity(i) + faceVelocity(i + 1));
+  const double p = (gas_.gamma - 1.0) * (E_[i] - 0.5 * r * u * u);
+  u_[i] = u;
+  p_[i] = p;
+  h0_[i] = (E_[i] + p) / r;
+  c_[i] = std::sqrt(std::max(gas_.gamma * p / r, 0.0));
+}
+
+double FsmSolver::faceVelocity(int j) const {
+  const int l = j > 0 ? j - 1 : 0, r = j < n_ ? j : n_ - 1;
+  return 2.0 * m_[j] / ((rho_[l] + rho_[r]) * geo_.A_face[j]);
+}
+
+EndState FsmSolver::endState(End e) const {
+  if (e == End::Left) return {rho_[0], u_[0], p_[0], geo_.A_face[0]};
+  return {rho_[n_ - 1], -u_[n_ - 1], p_[n_ - 1], geo_.A_face[n_]};
+}
+
+CellFault FsmSolver::step(double dt, const EndFlux& left, const EndFlux& right) {
+  const int n = n_;
+  const double* Af = geo_.A_face.data();
+  const double* V = geo_.V_cell.data();
+  const double* Df = geo_.D_face.data();
+  const double* Dc = geo_.D_cell.data();
+  double* rho = rho_.data();
+  double* E = E_.data();
+  double* p = p_.data();
+  double* u = u_.data();
+  double* c = c_.data();
+  double* h0 = h0_.data();
+  double* mom = mom_.data();
+  double* pq = pq_.data();
+  double* m = m_.data();
+  const double gm1 = gas_.gamma - 1.0;
+  const double c1 = cfg_.fsm_visc_linear, c2 = cfg_.fsm_visc_quadratic;
+
+  // 1. centre momentum flux (donor cell) and pressure + bulk viscosity, at level n
+  double* uf = uf_.data();
+  uf[0] = m[0] / (rho[0] * Af[0]);
+  for (int j = 1; j < n; ++j) uf[j] = 2.0 * m[j] / ((rho[j - 1] + rho[j]) * Af[j]);
+  uf[n] = m[n] / (rho[n - 1] * Af[n]);
+  for (int i = 0; i < n; ++i) {
+    const double uc = u[i];
+    mom[i] = uc * (uc >= 0.0 ? m[i] : m[i + 1]);
+    const double du = uf[i + 1] - uf[i];
+    const double q = du < 0.0 ? rho[i] * (c2 * du * du - c1 * c[i] * du) : 0.0;
+    pq[i] = p[i] + q;
+  }
+  // 2. interior ports: momentum to n+1/2, friction implicit
+  const double k = dt / geo_.dx;
+  const double fD = cfg_.friction_darcy;
+  if (fD > 0.0) {
+    for (int j = 1; j < n; ++j) {
+      const double mold = m[j];
+      const double ms = mold + k * ((mom[j - 1] - mom[j]) + Af[j] * (pq[j - 1] - pq[j]));
+      const double rf = 0.5 * (rho[j - 1] + rho[j]);
+      const double uf = mold / (rf * Af[j]);
+      m[j] = ms / (1.0 + dt * fD * std::abs(uf) / (2.0 * Df[j]));
+    }
+  } else {
+    for (int j = 1; j < n; ++j) {
+      m[j] += k * ((mom[j - 1] - mom[j]) + Af[j] * (pq[j - 1] - pq[j]));
+    }
+  }
+  // 3. end ports from the boundaries
+  m[0] = left.mdot_in;
+  m[n] = -right.mdot_in;
+  // 4. cells: mass and energy to n+1 (donor-cell h0), then the new primitives
+  const bool heat = cfg_.heat != WallHeat::None;
+  const double cv = gas_.cv(), cp = gas_.cp(), Rg = gas_.R, Tw = cfg_.T_wall;
+  double Hl = left.energy_in;
+  double vmax = 0.0;
+  bool ok = true;
+  for (int i = 0; i < n; ++i) {
+    const double mr = m[i + 1];
+    const double Hr = (i == n - 1) ? -right.energy_in : mr * (mr >= 0.0 ? h0[i] : h0[i + 1]);
+    const double inv = dt / V[i];
+    const double r = rho[i] + inv * (m[i] - mr);
+    double Ei = E[i] + inv * (Hl - Hr);
+    Hl = Hr;
+    if (heat) {
+      const double T = p[i] / (rho[i] * Rg);
+      const double h = cfg_.heat == WallHeat::GivenCoefficient
+                           ? cfg_.h_wall
+                           : 0.125 * fD * rho[i] * std::abs(u[i]) * cp;
+      const double kk = dt * h * 4.0 / Dc[i] / (r * cv);
+      Ei += r * cv * (Tw - T) * kk / (1.0 + kk);
+    }
+    rho[i] = r;
+    E[i] = Ei;
+    ok &= (r > 0.0) & (r < kHuge);
+  }
+  // new face velocities (densities at n+1) and cell primitives
+  uf[0] = m[0] / (rho[0] * Af[0]);
+  for (int j = 1; j < n; ++j) uf[j] = 2.0 * m[j] / ((rho[j - 1] + rho[j]) * Af[j]);
+  uf[n] = m[n] / (rho[n - 1] * Af[n]);
+  for (int i = 0; i < n; ++i) {
+    const double r = rho[i], ui = 0.5 * (uf[i] + uf[i + 1]);
+    const double pi = gm1 * (E[i] - 0.5 * r * ui * ui);
+    u[i] = ui;
+    p[i] = pi;
+    h0[i] = (E[i] + pi) / r;
+    const double ci = std::sqrt(std::abs(gas_.gamma * pi / r));
+    c[i] = ci;
+    // signal speed incl. the bulk-viscosity diffusion limit dt <= dx/(2 nu/dx)
+    const double du = uf[i + 1] - uf[i];
+    const double visc = du < 0.0 ? 2.0 * (c1 * ci - c2 * du) : 0.0;
+    vmax = std::max(vmax, std::abs(ui) + ci + visc);
+    ok &= (pi > 0.0) & (pi < kHuge);
+  }
+  max_speed_ = vmax;
+  return ok && std::isfinite(vmax) ? CellFault{} : findFault();
+}
+
+CellFault FsmSolver::findFault() const {
+  for (int i = 0; i < n_; ++i) {
+    if (!(rho_[i] > 0.0 && rho_[i] < kHuge)) return {i, "density", rho_[i]};
+    if (!(p_[i] > 0.0 && p_[i] < kHuge)) return {i, "pressure", p_[i]};
+    if (!std::isfinite(u_[i])) return {i, "velocity", u_[i]};
+  }
+  return {0, "wave speed", max_speed_};
+}
+
+double FsmSolver::mass() const {
+  double s = 0.0;
+  for (int i = 0; i < n_; ++i) s += rho_[i] * geo_.V_cell[i];
+  return s;
+}
+
+double FsmSolver::energy() const {
+  double s = 0.0;
+  for (int i = 0; i < n_; ++i) s += E_[i] * geo_.V_cell[i];
+  return s;
+}
+
+}  // namespace hbt::gasdyn

@@ -1,0 +1,133 @@
+// Network-level checks for both solvers: mass and energy conservation to round-off in a closed
+// network (junction + plenum), relaxation towards the uniform equilibrium pressure, gas at rest
+// staying at rest in a tapered pipe (well-balanced area source), the divergence guard and the
+// input validation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "common/errors.hpp"
+#include "gasdyn/cases.hpp"
+#include "gasdyn/network.hpp"
+
+using namespace hbt::gasdyn;
+
+class BothSolvers : public ::testing::TestWithParam<SolverKind> {};
+INSTANTIATE_TEST_SUITE_P(Solvers, BothSolvers, ::testing::Values(SolverKind::FSM, SolverKind::TVD),
+                         [](const auto& i) { return std::string(solverName(i.param)); });
+
+TEST_P(BothSolvers, ClosedNetworkConservesMassAndEnergy) {
+  const DriftResult r = runClosedNetwork(GetParam(), 50, 1.0);
+  std::printf("[closed %s] %ld steps, cpu %.3f s, mass drift %.3e, energy drift %.3e\n",
+              solverName(GetParam()), r.steps, r.cpu_s, r.massDrift(), r.energyDrift());
+  EXPECT_LT(std::abs(r.massDrift()), 1e-12);
+  EXPECT_LT(std::abs(r.energyDrift()), 1e-12);
+  EXPECT_GT(r.steps, 10000);
+}
+
+TEST_P(BothSolvers, ClosedNetworkRelaxesToEquilibrium) {
+  // After the pressure step, friction damps the waves; the final state must approach the uniform
+  // rest state with p_eq = (gamma-1) E_total / V_total (energy all internal).
+  Network net(PerfectGas{1.4, 287.0});
+  auto cfg = [&](const char* n, double L, double d) {
+    PipeConfig c;
+    c.name = n, c.length = L, c.cells = static_cast<int>(L * 40), c.friction_darcy = 0.05;
+    c.diameter_left = c.diameter_right = d, c.solver = GetParam();
+    return c;
+  };
+  Pipe& a = net.addPipe(cfg("a", 1.0, 0.05));
+  Pipe& b = net.addPipe(cfg("b", 0.5, 0.03));
+  Pipe& c = net.addPipe(cfg("c", 0.7, 0.03));
+  a.setUniform(2e5, 300.0);
+  b.setUniform(1e5, 300.0);
+  c.setUniform(1e5, 300.0);
+  Volume& j = net.addVolume("j", 5e-5, 1e5, 300.0);
+  Volume& pl = net.addVolume("plenum", 1e-3, 1e5, 300.0);
+  net.close(a, End::Left);
+  net.connect(a, End::Right, j);
+  net.connect(b, End::Left, j);
+  net.connect(c, End::Left, j);
+  net.connect(b, End::Right, pl);
+  net.connect(c, End::Right, pl);
+  double V = j.volume() + pl.volume();
+  for (const auto& p : net.pipes())
+    for (double v : p->geometry().V_cell) V += v;
+  const double peq = 0.4 * net.totalEnergy() / V;
+  net.advance(3.0);
+  std::printf("[equilibrium %s] p_eq %.1f Pa, plenum %.1f, junction %.1f, a(0) %.1f\n",
+              solverName(GetParam()), peq, pl.p(), j.p(), a.p(0));
+  EXPECT_NEAR(pl.p(), peq, 0.01 * peq);
+  EXPECT_NEAR(j.p(), peq, 0.01 * peq);
+  EXPECT_NEAR(a.p(0), peq, 0.01 * peq);
+}
+
+TEST_P(BothSolvers, TaperedPipeAtRestStaysAtRest) {
+  Network net;
+  PipeConfig c;
+  c.name = "taper", c.length = 0.6, c.cells = 30, c.solver = GetParam();
+  c.diameter_left = 0.02, c.diameter_right = 0.08, c.friction_darcy = 0.03;
+  Pipe& p = net.addPipe(c);
+  p.setUniform(1.3e5, 350.0);
+  net.close(p, End::Left);
+  net.close(p, End::Right);
+  net.advance(0.02);
+  for (int i = 0; i < p.cells(); ++i) {
+    EXPECT_LT(std::abs(p.u(i)), 1e-9) << "cell " << i;
+    EXPECT_NEAR(p.p(i), 1.3e5, 1e-6) << "cell " << i;
+  }
+}
+
+TEST_P(BothSolvers, DivergenceNamesPipeCellAndQuantity) {
+  Network net;
+  PipeConfig c;
+  c.name = "exh_manifold_1", c.length = 1.0, c.cells = 20, c.solver = GetParam();
+  Pipe& p = net.addPipe(c);
+  for (int i = 0; i < 20; ++i) p.setState(i, i < 10 ? 5.0 : 0.1, 0.0, i < 10 ? 5e5 : 1e4);
+  net.close(p, End::Left);
+  net.close(p, End::Right);
+  try {
+    p.step(50.0 * p.maxDt());  // far beyond the CFL limit
+    FAIL() << "no ModelDivergence";
+  } catch (const hbt::ModelDivergence& e) {
+    const std::string w = e.what();
+    EXPECT_NE(w.find("pipe exh_manifold_1 cell "), std::string::npos) << w;
+    EXPECT_TRUE(w.find("density") != std::string::npos || w.find("pressure") != std::string::npos)
+        << w;
+  }
+}
+
+TEST(Network, TimeStepFloorThrowsNamingTheLimitingPipe) {
+  Network net;
+  PipeConfig c;
+  c.name = "short_runner", c.length = 0.01, c.cells = 10;
+  Pipe& p = net.addPipe(c);
+  p.setUniform(1e5, 300.0);
+  net.close(p, End::Left);
+  net.close(p, End::Right);
+  net.setDtFloor(1e-5);  // the CFL step here is ~2.6e-6 s
+  try {
+    net.advance(1e-3);
+    FAIL() << "no ModelDivergence";
+  } catch (const hbt::ModelDivergence& e) {
+    EXPECT_NE(std::string(e.what()).find("short_runner"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("time step"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Network, InputValidation) {
+  Network net;
+  PipeConfig c;
+  c.name = "p1";
+  Pipe& p = net.addPipe(c);
+  EXPECT_THROW(net.addPipe(c), hbt::InputError);  // duplicate name
+  net.close(p, End::Left);
+  EXPECT_THROW(net.close(p, End::Left), hbt::InputError);  // end taken twice
+  EXPECT_THROW(net.advance(1e-3), hbt::InputError);        // right end unconnected
+  PipeConfig bad;
+  bad.name = "bad", bad.cells = 1;
+  EXPECT_THROW(net.addPipe(bad), hbt::InputError);
+  bad.cells = 10, bad.length = -1.0;
+  EXPECT_THROW(net.addPipe(bad), hbt::InputError);
+  EXPECT_THROW(net.addVolume("v", 0.0, 1e5, 300.0), hbt::InputError);
+}
