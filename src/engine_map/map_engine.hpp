@@ -1,0 +1,118 @@
+// Map-based diesel engine (SPEC §3): VECTO full-load/motoring curve and scattered fuel map of a
+// reference engine, scaled to 210 kW / 1,100 Nm (see engine_scaling.hpp), with torque build-up
+// dynamics, overrun fuel cut and a quasi-steady gas path for the aftertreatment port.
+//
+// Speed ω [rad/s] is imposed (by the vehicle/driveline). Per step of length Δt [s], with the
+// brake torque T_{k-1} of the previous step, static limits T_fl(ω) (full load) and T_mot(ω)
+// (motoring, < 0) and the VECTO PT1 time constant τ(ω) [s] (declaration_2015/PT1.csv, speed
+// axis scaled by f_n, times pt1_time_constant_factor):
+//
+//   T_dyn,max = T_{k-1} + (T_fl - T_{k-1}) (1 - e^{-Δt/τ})        (VECTO "dynamic full load":
+//               a first-order lag of the available torque towards full load; τ = 0 -> T_fl)
+//   T_dyn,min = T_mot  (torque decrease instantaneous, or lagged with τ_dec if > 0)
+//   T_k       = clamp(T_req, T_dyn,min, T_dyn,max)
+//
+// so a full-load step from T_0 at constant speed gives exactly T(t) = T_fl - (T_fl - T_0) e^{-t/τ},
+// while small increases (idle governor) are served within the available headroom.
+//   ṁ_f = 0                             if T_req <= T_mot or fuel is disabled (overrun fuel cut,
+//                                        engine off): T_k = T_mot (drag)
+//   ṁ_f = max(0, F(ω_c, T_k)) · s(ω)    otherwise; F = Delaunay/barycentric map [kg/s],
+//                                        ω_c = ω clamped to the map speed range,
+//                                        s = min(1, ω/ω_min) (cranking/stall region below the
+//                                        lowest map speed, where T_fl and T_mot fade linearly to 0)
+// Gas path, coolant heat and NOx: gas_path.hpp. Fuel energy ṁ_f·LHV.
+// Outputs are valid for the step just taken; no allocation in step().
+#pragma once
+#include <string>
+
+#include "common/params.hpp"
+#include "common/table1d.hpp"
+#include "engine_map/engine_scaling.hpp"
+#include "engine_map/gas_path.hpp"
+#include "engine_map/scattered_map.hpp"
+
+namespace hbt::engine_map {
+
+struct MapEngineParams {
+  // Data files (relative paths are resolved against the base directory given to MapEngine).
+  std::string full_load_file = "config/data/engine/generic_primary_bus_7.7l_200kW/FullLoad.vfld";
+  std::string fuel_map_file = "config/data/engine/generic_primary_bus_7.7l_200kW/FCMap.vmap";
+  std::string pt1_file = "config/data/vehicle/declaration_2015/PT1.csv";
+  double target_peak_torque_Nm = 1100.0;   // SPEC §3
+  double target_peak_power_W = 210000.0;   // SPEC §3
+  bool scale_speed_axis = true;            // false: torque-only scaling (power = f_T P_ref)
+  double pt1_time_constant_factor = 1.0;   // multiplier on the VECTO PT1 τ [-]
+  double torque_decrease_time_constant_s = 0.0;  // τ_dec [s]; 0 = instantaneous decrease
+  GasPathParams gas;
+  /// Registers every parameter (key names = config/engine_map.yaml).
+  void declare(ParamSet& ps);
+};
+
+struct MapEngineInputs {
+  double speed_rad_s = 0.0;          // imposed crank speed ω [rad/s]
+  double torque_request_Nm = 0.0;    // requested brake torque [Nm]
+  double ambient_T_K = 298.15;       // ambient = air-filter inlet temperature [K]
+  double ambient_p_Pa = 101325.0;    // ambient pressure [Pa]
+  bool fuel_enabled = true;          // false = engine off / fuel cut (torque = motoring)
+};
+
+struct MapEngineOutputs {
+  double brake_torque_Nm = 0.0;        // actual brake torque T_k [Nm]
+  double fuel_mass_flow_kg_s = 0.0;    // [kg/s]
+  double max_torque_Nm = 0.0;          // static full-load torque at ω [Nm]
+  double min_torque_Nm = 0.0;          // motoring torque at ω [Nm] (< 0)
+  double dynamic_max_torque_Nm = 0.0;  // PT1-limited available torque this step [Nm]
+  double time_constant_s = 0.0;        // τ(ω) used [s]
+  bool fuel_cut = false;               // overrun / engine-off fuel cut active
+  GasPathState gas;                    // air path, exhaust flow/T/composition, heat split, NOx
+  // Cumulative since reset():
+  double fuel_mass_kg = 0.0;           // [kg]
+  double fuel_energy_J = 0.0;          // ∫ṁ_f LHV dt [J]
+  double brake_work_J = 0.0;           // ∫T ω dt [J] (positive and motoring)
+  double positive_work_J = 0.0;        // ∫max(Tω, 0) dt [J]
+  double motoring_work_J = 0.0;        // ∫min(Tω, 0) dt [J] (<= 0)
+  double coolant_heat_J = 0.0;         // ∫Q_cool dt [J]
+  double nox_mass_kg = 0.0;            // ∫ṁ_NOx dt [kg]
+};
+
+class MapEngine {
+ public:
+  /// Loads and scales the data. Throws InputError (file + key) on bad data or parameters.
+  explicit MapEngine(const MapEngineParams& p, const std::string& base_dir = "");
+
+  /// Starts at speed ω0 [rad/s] with brake torque T0 [Nm] (clamped to the limits).
+  void reset(double speed_rad_s, double torque_Nm = 0.0, double ambient_T_K = 298.15);
+  /// Advances by dt_s [s] (> 0). Throws ModelDivergence on non-finite inputs.
+  const MapEngineOutputs& step(double dt_s, const MapEngineInputs& in);
+  const MapEngineOutputs& outputs() const { return out_; }
+
+  // Static characteristics of the scaled engine (SI).
+  double fullLoadTorque(double speed_rad_s) const;
+  double motoringTorque(double speed_rad_s) const;
+  double timeConstant(double speed_rad_s) const;
+  /// Steady-state fuel flow [kg/s] at brake torque T (0 at or below motoring torque).
+  double steadyFuel(double speed_rad_s, double torque_Nm) const;
+  double peakTorque() const { return engine_map::peakTorque(fld_); }
+  double peakPower(double* speed_rad_s = nullptr) const { return engine_map::peakPower(fld_, speed_rad_s); }
+  double minMapSpeed() const { return w_min_; }
+  double maxMapSpeed() const { return w_max_; }
+  const EngineScaling& scaling() const { return scaling_; }
+  const FullLoadCurve& fullLoadCurve() const { return fld_; }
+  const FuelMapPoints& fuelMapPoints() const { return map_pts_; }
+  const ScatteredLinearMap& fuelMap() const { return fuel_; }
+  const MapEngineParams& params() const { return p_; }
+
+ private:
+  MapEngineParams p_;
+  EngineScaling scaling_;
+  FullLoadCurve fld_;
+  FuelMapPoints map_pts_;
+  ScatteredLinearMap fuel_;
+  Table1D t_fl_, t_mot_, pt1_;
+  double w_min_ = 0.0, w_max_ = 0.0;
+  double fuel_ref_kg_s_ = 0.0;  // fuel at the rated (peak-power) full-load point
+  double torque_ = 0.0;
+  MapEngineOutputs out_;
+};
+
+}  // namespace hbt::engine_map

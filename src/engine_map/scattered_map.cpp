@@ -1,0 +1,251 @@
+#include "engine_map/scattered_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <utility>
+
+#include "common/errors.hpp"
+
+namespace hbt::engine_map {
+namespace {
+
+struct P { double u, v; };
+
+double orient(const P& a, const P& b, const P& c) {
+  return (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
+}
+
+// > 0 if d is strictly inside the circumcircle of the counter-clockwise triangle (a, b, c).
+double inCircle(const P& a, const P& b, const P& c, const P& d) {
+  const double adx = a.u - d.u, ady = a.v - d.v;
+  const double bdx = b.u - d.u, bdy = b.v - d.v;
+  const double cdx = c.u - d.u, cdy = c.v - d.v;
+  const double ad = adx * adx + ady * ady, bd = bdx * bdx + bdy * bdy, cd = cdx * cdx + cdy * cdy;
+  return adx * (bdy * cd - bd * cdy) - ady * (bdx * cd - bd * cdx) + ad * (bdx * cdy - bdy * cdx);
+}
+
+double distToSegment2(const P& p, const P& a, const P& b) {
+  const double du = b.u - a.u, dv = b.v - a.v;
+  const double l2 = du * du + dv * dv;
+  double t = l2 > 0.0 ? ((p.u - a.u) * du + (p.v - a.v) * dv) / l2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const double eu = a.u + t * du - p.u, ev = a.v + t * dv - p.v;
+  return eu * eu + ev * ev;
+}
+
+}  // namespace
+
+ScatteredLinearMap::ScatteredLinearMap(std::vector<double> x, std::vector<double> y,
+                                       std::vector<double> z, const std::string& source)
+    : x_(std::move(x)), y_(std::move(y)), z_(std::move(z)) {
+  const std::size_t n = x_.size();
+  if (y_.size() != n || z_.size() != n)
+    throw InputError(source, "points", "x, y and z have different lengths");
+  if (n < 3) throw InputError(source, "points", "at least 3 points are needed");
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(x_[i]) || !std::isfinite(y_[i]) || !std::isfinite(z_[i]))
+      throw InputError(source, "points", "non-finite value at point " + std::to_string(i + 1));
+  const auto [xmin, xmax] = std::minmax_element(x_.begin(), x_.end());
+  const auto [ymin, ymax] = std::minmax_element(y_.begin(), y_.end());
+  if (!(*xmax > *xmin) || !(*ymax > *ymin))
+    throw InputError(source, "points", "points are collinear (no 2-D extent)");
+  x0_ = *xmin;
+  y0_ = *ymin;
+  sx_ = 1.0 / (*xmax - *xmin);
+  sy_ = 1.0 / (*ymax - *ymin);
+  pu_.resize(n);
+  pv_.resize(n);
+  std::set<std::pair<double, double>> seen;
+  for (std::size_t i = 0; i < n; ++i) {
+    pu_[i] = u(x_[i]);
+    pv_[i] = v(y_[i]);
+    if (!seen.insert({x_[i], y_[i]}).second)
+      throw InputError(source, "points", "duplicate point " + std::to_string(i + 1));
+  }
+  triangulate(source);
+}
+
+void ScatteredLinearMap::triangulate(const std::string& source) {
+  const int n = static_cast<int>(pu_.size());
+  std::vector<P> pts(n + 3);
+  for (int i = 0; i < n; ++i) pts[i] = {pu_[i], pv_[i]};
+  // Super-triangle enclosing [0,1]^2 with a wide margin.
+  const double M = 1.0e3;
+  pts[n] = {-M, -M};
+  pts[n + 1] = {M, -M};
+  pts[n + 2] = {0.5, M};
+  std::vector<std::array<int, 3>> tris{{n, n + 1, n + 2}};
+  const double eps_orient = 1e-14;
+
+  for (int ip = 0; ip < n; ++ip) {
+    const P& p = pts[ip];
+    // Triangle containing p (on an edge counts as inside).
+    int seed = -1;
+    for (std::size_t k = 0; k < tris.size() && seed < 0; ++k) {
+      const auto& t = tris[k];
+      if (orient(pts[t[0]], pts[t[1]], p) >= -eps_orient &&
+          orient(pts[t[1]], pts[t[2]], p) >= -eps_orient &&
+          orient(pts[t[2]], pts[t[0]], p) >= -eps_orient)
+        seed = static_cast<int>(k);
+    }
+    if (seed < 0) throw InputError(source, "points", "triangulation failed (point location)");
+    // Cavity: triangles connected to the seed (through shared edges) whose circumcircle
+    // contains p. Candidates first (few), then connectivity among them.
+    std::vector<char> bad(tris.size(), 0);
+    auto sharesEdge = [](const std::array<int, 3>& a, const std::array<int, 3>& b) {
+      int common = 0;
+      for (int i : a)
+        for (int j : b) common += (i == j);
+      return common == 2;
+    };
+    std::vector<int> cand;
+    for (std::size_t k = 0; k < tris.size(); ++k) {
+      const auto& t = tris[k];
+      if (static_cast<int>(k) != seed && inCircle(pts[t[0]], pts[t[1]], pts[t[2]], p) > 0.0)
+        cand.push_back(static_cast<int>(k));
+    }
+    bad[seed] = 1;
+    std::vector<int> stack{seed};
+    while (!stack.empty()) {
+      const int k = stack.back();
+      stack.pop_back();
+      for (int c : cand)
+        if (!bad[c] && sharesEdge(tris[c], tris[k])) { bad[c] = 1; stack.push_back(c); }
+    }
+    // Prune until every boundary edge sees p strictly on its inner side (star-shaped cavity).
+    std::vector<std::pair<int, int>> boundary;
+    for (int iter = 0;; ++iter) {
+      if (iter > 10000) throw InputError(source, "points", "triangulation failed (cavity)");
+      std::map<std::pair<int, int>, int> edgeCount;
+      std::map<std::pair<int, int>, int> edgeOwner;
+      for (std::size_t k = 0; k < tris.size(); ++k) {
+        if (!bad[k]) continue;
+        for (int e = 0; e < 3; ++e) {
+          const int a = tris[k][e], b = tris[k][(e + 1) % 3];
+          const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+          ++edgeCount[key];
+          edgeOwner[key] = static_cast<int>(k);
+        }
+      }
+      boundary.clear();
+      int offender = -1;
+      for (std::size_t k = 0; k < tris.size() && offender < 0; ++k) {
+        if (!bad[k]) continue;
+        for (int e = 0; e < 3; ++e) {
+          const int a = tris[k][e], b = tris[k][(e + 1) % 3];
+          if (edgeCount[{std::min(a, b), std::max(a, b)}] != 1) continue;
+          if (orient(pts[a], pts[b], p) <= eps_orient) {
+            if (static_cast<int>(k) != seed) { offender = static_cast<int>(k); break; }
+            // p on a boundary edge of its own triangle: the neighbour across that edge must be
+            // in the cavity too (p lies strictly inside its circumcircle); add it.
+            for (std::size_t j = 0; j < tris.size(); ++j)
+              if (!bad[j] && sharesEdge(tris[j], tris[k])) {
+                const auto& tj = tris[j];
+                bool hasA = false, hasB = false;
+                for (int q : tj) { hasA |= q == a; hasB |= q == b; }
+                if (hasA && hasB) { offender = -2 - static_cast<int>(j); break; }
+              }
+            if (offender == -1) offender = -1000000000;  // p on the hull of the super-triangle
+            break;
+          }
+          boundary.push_back({a, b});
+        }
+      }
+      if (offender == -1) break;
+      if (offender >= 0) bad[offender] = 0;
+      else if (offender > -1000000000) bad[-2 - offender] = 1;
+      else throw InputError(source, "points", "triangulation failed (degenerate cavity)");
+    }
+    std::vector<std::array<int, 3>> next;
+    next.reserve(tris.size() + 2);
+    for (std::size_t k = 0; k < tris.size(); ++k)
+      if (!bad[k]) next.push_back(tris[k]);
+    for (const auto& e : boundary) next.push_back({e.first, e.second, ip});
+    tris.swap(next);
+  }
+  tri_.clear();
+  for (const auto& t : tris)
+    if (t[0] < n && t[1] < n && t[2] < n) {
+      if (orient(pts[t[0]], pts[t[1]], pts[t[2]]) <= 1e-15) continue;  // sliver of collinear pts
+      tri_.push_back(t);
+    }
+  if (tri_.empty()) throw InputError(source, "points", "no triangle (points collinear)");
+}
+
+std::array<double, 3> ScatteredLinearMap::bary(std::size_t k, double qu, double qv) const {
+  const auto& t = tri_[k];
+  const double ax = pu_[t[0]], ay = pv_[t[0]], bx = pu_[t[1]], by = pv_[t[1]];
+  const double cx = pu_[t[2]], cy = pv_[t[2]];
+  const double det = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  const double lb = ((qu - ax) * (cy - ay) - (qv - ay) * (cx - ax)) / det;
+  const double lc = ((bx - ax) * (qv - ay) - (by - ay) * (qu - ax)) / det;
+  return {1.0 - lb - lc, lb, lc};
+}
+
+bool ScatteredLinearMap::inside(double x, double y) const {
+  const double qu = u(x), qv = v(y);
+  for (std::size_t k = 0; k < tri_.size(); ++k) {
+    const auto l = bary(k, qu, qv);
+    if (l[0] >= -1e-12 && l[1] >= -1e-12 && l[2] >= -1e-12) return true;
+  }
+  return false;
+}
+
+double ScatteredLinearMap::operator()(double x, double y) const {
+  const double qu = u(x), qv = v(y);
+  std::size_t best = 0;
+  double bestDist = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < tri_.size(); ++k) {
+    const auto l = bary(k, qu, qv);
+    if (l[0] >= -1e-12 && l[1] >= -1e-12 && l[2] >= -1e-12)
+      return l[0] * z_[tri_[k][0]] + l[1] * z_[tri_[k][1]] + l[2] * z_[tri_[k][2]];
+    const auto& t = tri_[k];
+    const P q{qu, qv};
+    double d = std::numeric_limits<double>::infinity();
+    for (int e = 0; e < 3; ++e)
+      d = std::min(d, distToSegment2(q, {pu_[t[e]], pv_[t[e]]},
+                                     {pu_[t[(e + 1) % 3]], pv_[t[(e + 1) % 3]]}));
+    if (d < bestDist) { bestDist = d; best = k; }
+  }
+  const auto l = bary(best, qu, qv);
+  return l[0] * z_[tri_[best][0]] + l[1] * z_[tri_[best][1]] + l[2] * z_[tri_[best][2]];
+}
+
+double ScatteredLinearMap::totalAreaNormalised() const {
+  double a = 0.0;
+  for (const auto& t : tri_)
+    a += 0.5 * orient({pu_[t[0]], pv_[t[0]]}, {pu_[t[1]], pv_[t[1]]}, {pu_[t[2]], pv_[t[2]]});
+  return a;
+}
+
+double ScatteredLinearMap::hullAreaNormalised() const {
+  // Andrew's monotone chain.
+  std::vector<P> p(pu_.size());
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = {pu_[i], pv_[i]};
+  std::sort(p.begin(), p.end(), [](const P& a, const P& b) {
+    return a.u < b.u || (a.u == b.u && a.v < b.v);
+  });
+  std::vector<P> h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && orient(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && orient(h[k - 2], h[k - 1], p[i - 1]) <= 0.0) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k - 1);
+  double a = 0.0;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const P& q = h[i];
+    const P& r = h[(i + 1) % h.size()];
+    a += q.u * r.v - r.u * q.v;
+  }
+  return 0.5 * a;
+}
+
+}  // namespace hbt::engine_map

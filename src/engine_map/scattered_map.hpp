@@ -1,0 +1,62 @@
+// Piecewise-linear interpolation on scattered points: Delaunay triangulation + barycentric
+// interpolation, as VECTO does for its fuel maps (VectoCore "DelaunayMap").
+//
+// Let (x_i, y_i, z_i) be N scattered points. The axes are first normalised to [0, 1]
+// (u = (x - x_min)/(x_max - x_min), v likewise) so that the triangulation does not depend on
+// the units of the axes (rpm vs Nm); any per-axis affine scaling of the data (e.g. the engine
+// scaling) therefore yields the same triangles. Inside a triangle (a, b, c)
+//
+//     z(x, y) = λ_a z_a + λ_b z_b + λ_c z_c,   λ = barycentric coordinates, Σλ = 1, λ >= 0,
+//
+// so every data point is reproduced exactly and any plane z = p0 + p1 x + p2 y is reproduced
+// exactly everywhere. Outside the convex hull the plane of the nearest triangle (Euclidean
+// distance in normalised coordinates) is continued linearly (λ may be negative): this
+// reproduces a plane exactly also outside, and is continuous across the hull boundary of that
+// triangle. Callers clamp their queries to the physical range (engine: speed range of the map,
+// torque between motoring and full load), so extrapolation only covers thin edge slivers.
+//
+// Triangulation: Bowyer-Watson insertion in a large super-triangle, with the cavity grown as a
+// connected set from the triangle containing the new point and pruned until it is star-shaped
+// as seen from that point (robust with the many collinear and co-circular points of gridded
+// VECTO maps). Built once in the constructor (allocates); look-ups do not allocate.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+namespace hbt::engine_map {
+
+class ScatteredLinearMap {
+ public:
+  ScatteredLinearMap() = default;
+  /// Throws InputError(source, "points", ...) for < 3 points, different lengths, non-finite
+  /// values, duplicate points or all points collinear.
+  ScatteredLinearMap(std::vector<double> x, std::vector<double> y, std::vector<double> z,
+                     const std::string& source = "scattered map");
+
+  /// Interpolated (inside the hull) or nearest-triangle extrapolated (outside) value.
+  double operator()(double x, double y) const;
+  /// True if (x, y) lies in (or on the boundary of) a triangle of the triangulation.
+  bool inside(double x, double y) const;
+
+  std::size_t triangleCount() const { return tri_.size(); }
+  /// Vertex indices (into the input point list) of triangle k, counter-clockwise.
+  const std::array<int, 3>& triangle(std::size_t k) const { return tri_[k]; }
+  /// Sum of triangle areas in normalised coordinates (equals the convex-hull area).
+  double totalAreaNormalised() const;
+  /// Convex-hull area of the input points in normalised coordinates (independent check).
+  double hullAreaNormalised() const;
+
+ private:
+  double u(double x) const { return (x - x0_) * sx_; }
+  double v(double y) const { return (y - y0_) * sy_; }
+  void triangulate(const std::string& source);
+  /// Barycentric coordinates of (pu, pv) in triangle k.
+  std::array<double, 3> bary(std::size_t k, double pu, double pv) const;
+
+  std::vector<double> x_, y_, z_, pu_, pv_;
+  std::vector<std::array<int, 3>> tri_;
+  double x0_ = 0.0, y0_ = 0.0, sx_ = 1.0, sy_ = 1.0;
+};
+
+}  // namespace hbt::engine_map
