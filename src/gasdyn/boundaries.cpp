@@ -67,20 +67,19 @@ void PipeOrifice::computeFluxes(double t) {
   const PipeEnd& up = forward ? a_ : b_;
   const PipeEnd& dn = forward ? b_ : a_;
   const EndState su = forward ? sa : sb, sd = forward ? sb : sa;
-  const double p0 = std::max(pa, pb), pd = std::min(pa, pb);
-  const double Tu = su.p / (su.rho * g.R);
-  const double T0 = Tu * std::pow(p0 / su.p, (g.gamma - 1.0) / g.gamma);
+  const double pd = sd.p;
   const double aeff =
       area_->effectiveArea(forward ? FlowDirection::Forward : FlowDirection::Reverse, t);
-  double mdot = nozzleMassFlow(g, aeff, p0, T0, pd);
+  FaceState fu = demandOutflowFace(g, su, [&](double p0, double T0) {
+    return nozzleMassFlow(g, aeff, p0, T0, pd);
+  });
+  double mdot = -fu.mdot_in(su.A);
   if (mdot <= 0.0) {
     a_.setFlux({0.0, closedFacePressure(g, sa) * sa.A, 0.0});
     b_.setFlux({0.0, closedFacePressure(g, sb) * sb.A, 0.0});
     mdot_ = 0.0;
     return;
   }
-  FaceState fu = massFlowFace(g, su, -mdot, 0.0);
-  mdot = -fu.mdot_in(su.A);  // may be capped by choking of the upstream end
   double pu0, Tu0;
   stagnation(g, fu, pu0, Tu0);
   FaceState fd = massFlowFace(g, sd, mdot, Tu0);

@@ -7,10 +7,11 @@
 //   Valve       orifice between a Volume and a pipe end, effective area from an AreaProvider
 //               (Forward = from the volume into the pipe), isentropic nozzle (choked/subsonic) +
 //               characteristic of the pipe end solved together; both directions.
-//   PipeOrifice orifice between two pipe ends (Forward = pipe A -> pipe B): mass flow from the
-//               nozzle equation between the upstream end brought to rest (p0, T0) and the
-//               downstream end's wall pressure (quasi-steady, explicit); both ends then get faces
-//               carrying that same mass flow and total enthalpy, so mass and energy are conserved.
+//   PipeOrifice orifice between two pipe ends (Forward = pipe A -> pipe B; direction from the
+//               ends' wall pressures): the upstream face solves nozzle(face total state -> the
+//               downstream end-cell static pressure) with its characteristic (quasi-steady,
+//               explicit in the downstream pressure); the downstream face then carries that same
+//               mass flow and total enthalpy, so mass and energy are conserved exactly.
 #pragma once
 #include <memory>
 

@@ -10,6 +10,9 @@
 // given: T_b = T0 - u_b^2/(2 cp). Faces never exceed sonic speed (choking); mass flows asked
 // beyond the sonic limit are capped there, so callers must use the returned state's flow.
 #pragma once
+#include <algorithm>
+#include <cmath>
+
 #include "gasdyn/gas.hpp"
 #include "gasdyn/pipe_end.hpp"
 
@@ -39,5 +42,95 @@ FaceState orificeFace(const PerfectGas& g, const EndState& s, double A_in, doubl
                       double pv, double Tv);
 /// Stagnation pressure [Pa] and temperature [K] of a face state.
 void stagnation(const PerfectGas& g, const FaceState& f, double& p0, double& T0);
+
+/// Inflow demanded by a device at the face pressure: mass flow [kg/s] (decreasing in p_b) and
+/// the stagnation temperature [K] of the delivered gas.
+struct Supply {
+  double mdot, T0;
+};
+
+namespace detail {
+/// Simple-wave relations of one end cell (g = (gamma-1)/2, ik = 2 gamma/(gamma-1)).
+struct Wave {
+  double g, c, u, p, rho, A, ik;
+  Wave(const PerfectGas& gas, const EndState& s)
+      : g(0.5 * (gas.gamma - 1.0)), c(std::sqrt(gas.gamma * s.p / s.rho)), u(s.u_in), p(s.p),
+        rho(s.rho), A(s.A), ik(2.0 * gas.gamma / (gas.gamma - 1.0)) {}
+  double base(double ub) const { return std::max(1.0 + g * (ub - u) / c, 1e-6); }
+  double pressure(double ub) const { return p * std::pow(base(ub), ik); }
+  double density(double ub) const { return rho * std::pow(base(ub), 1.0 / g); }  // same entropy
+  double wSonic() const { return std::max((c - g * u) / (1.0 + g), 0.0); }       // sonic outflow
+  double velocityAt(double pt) const { return u + c / g * (std::pow(pt / p, 1.0 / ik) - 1.0); }
+  FaceState outflow(double w) const { return {density(-w), -w, pressure(-w)}; }
+  FaceState inflow(const PerfectGas& gas, double ub, double T0) const {
+    const double Tb = std::max(T0 - ub * ub / (2.0 * gas.cp()), 1e-6 * T0);
+    const double pb = pressure(ub);
+    return {pb / (gas.R * Tb), ub, pb};
+  }
+};
+
+/// Root of f increasing on [lo, hi] with f(lo) < 0 < f(hi) (Illinois / modified regula falsi).
+template <class F>
+double illinois(F f, double lo, double hi, double flo, double fhi) {
+  int side = 0;
+  double x = lo;
+  for (int it = 0; it < 60; ++it) {
+    x = (lo * fhi - hi * flo) / (fhi - flo);
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    const double fx = f(x);
+    if (fx == 0.0) return x;
+    if (fx < 0.0) {
+      lo = x, flo = fx;
+      if (side == -1) fhi *= 0.5;
+      side = -1;
+    } else {
+      hi = x, fhi = fx;
+      if (side == 1) flo *= 0.5;
+      side = 1;
+    }
+    if (hi - lo <= 1e-13 * (std::abs(hi) + std::abs(lo)) + 1e-300) break;
+  }
+  return x;
+}
+}  // namespace detail
+
+/// Outflow face whose mass flow equals demand(p0_face, T0_face) >= 0 [kg/s] (a nozzle, a turbine
+/// map...): the device sees the total state of the gas actually leaving through the face.
+template <class Demand>
+FaceState demandOutflowFace(const PerfectGas& gas, const EndState& s, Demand demand) {
+  const detail::Wave w(gas, s);
+  auto f = [&](double wo) {
+    const FaceState fs = w.outflow(wo);
+    double p0, T0;
+    stagnation(gas, fs, p0, T0);
+    return -fs.mdot_in(w.A) - demand(p0, T0);
+  };
+  const double ws = w.wSonic();
+  const double f0 = f(0.0);
+  if (f0 >= 0.0) return w.outflow(0.0);
+  const double fhi = f(ws);
+  if (fhi <= 0.0) return w.outflow(ws);  // the pipe end chokes
+  return w.outflow(detail::illinois(f, 0.0, ws, f0, fhi));
+}
+
+/// Inflow face whose mass flow equals demand(p_b).mdot >= 0 at its own static pressure p_b, the
+/// gas arriving with total temperature demand(p_b).T0 (an orifice from a volume, a compressor).
+template <class Demand>
+FaceState demandInflowFace(const PerfectGas& gas, const EndState& s, Demand demand) {
+  const detail::Wave w(gas, s);
+  auto face = [&](double ub) { return w.inflow(gas, ub, demand(w.pressure(ub)).T0); };
+  auto f = [&](double ub) {
+    const double pb = w.pressure(ub);
+    const Supply d = demand(pb);
+    return w.inflow(gas, ub, d.T0).mdot_in(w.A) - d.mdot;
+  };
+  const double f0 = f(0.0);
+  if (f0 >= 0.0) return face(0.0);
+  double us = std::sqrt(2.0 * gas.gamma * gas.R * demand(w.pressure(0.0)).T0 / (gas.gamma + 1.0));
+  us = std::sqrt(2.0 * gas.gamma * gas.R * demand(w.pressure(us)).T0 / (gas.gamma + 1.0));
+  const double fhi = f(us);
+  if (fhi <= 0.0) return face(us);  // sonic face
+  return face(detail::illinois(f, 0.0, us, f0, fhi));
+}
 
 }  // namespace hbt::gasdyn

@@ -1,5 +1,6 @@
 #include "gasdyn/turbo_boundaries.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/errors.hpp"
@@ -19,26 +20,28 @@ TurbineEntry::TurbineEntry(std::string name, PipeEnd inlet, Volume& outlet,
 void TurbineEntry::computeFluxes(double) {
   const PerfectGas& g = end_.pipe->gas();
   const EndState s = end_.state();
-  const double k = (g.gamma - 1.0) / g.gamma;
-  const double p0 = closedFacePressure(g, s);
-  const double T0 = s.p / (s.rho * g.R) * std::pow(p0 / s.p, k);
-  const double m = map_->massFlow(p0, T0, out_.p(), speed_);
+  const double k = (g.gamma - 1.0) / g.gamma, pout = out_.p();
   power_ = 0.0;
-  if (m >= 0.0) {
-    const FaceState f = massFlowFace(g, s, -m, 0.0);
+  if (closedFacePressure(g, s) >= pout) {  // pipe -> turbine, flow from the face total state
+    const FaceState f = demandOutflowFace(g, s, [&](double p0, double T0) {
+      return std::max(map_->massFlow(p0, T0, pout, speed_), 0.0);
+    });
     const EndFlux F = faceFlux(g, f.rho, f.u_in, f.p, s.A);
     end_.setFlux(F);
     mdot_ = -F.mdot_in;
     double p0f, T0f;
     stagnation(g, f, p0f, T0f);
-    const double eta = mdot_ > 0.0 ? map_->efficiency(p0, T0, out_.p(), speed_) : 0.0;
-    const double pr = out_.p() < p0f ? out_.p() / p0f : 1.0;
+    const double eta = mdot_ > 0.0 ? map_->efficiency(p0f, T0f, pout, speed_) : 0.0;
+    const double pr = pout < p0f ? pout / p0f : 1.0;
     const double T0out = T0f * (1.0 - eta * (1.0 - std::pow(pr, k)));
     const double e_out = mdot_ * g.cp() * T0out;
     out_.addFlow(mdot_, e_out);
     power_ = -F.energy_in - e_out;
-  } else {  // back flow from the outlet volume into the pipe
-    const FaceState f = massFlowFace(g, s, -m, out_.T());
+  } else {  // back flow from the outlet volume into the pipe (map used with roles swapped)
+    const double Tout = out_.T();
+    const FaceState f = demandInflowFace(g, s, [&](double pb) {
+      return Supply{std::max(map_->massFlow(pout, Tout, pb, speed_), 0.0), Tout};
+    });
     mdot_ = -applyFace(f, end_, &out_);
   }
 }
@@ -54,22 +57,25 @@ CompressorOutlet::CompressorOutlet(std::string name, Volume& inlet, PipeEnd outl
 void CompressorOutlet::computeFluxes(double) {
   const PerfectGas& g = end_.pipe->gas();
   const EndState s = end_.state();
-  const double k = (g.gamma - 1.0) / g.gamma;
-  const double pb = closedFacePressure(g, s);
-  const double m = map_->massFlow(in_.p(), in_.T(), pb, speed_);
+  const double k = (g.gamma - 1.0) / g.gamma, pin = in_.p(), Tin = in_.T();
+  auto supply = [&](double pb) {
+    const double m = map_->massFlow(pin, Tin, pb, speed_);
+    const double eta = map_->efficiency(pin, Tin, pb, speed_);
+    return Supply{std::max(m, 0.0), Tin * (1.0 + (std::pow(pb / pin, k) - 1.0) / eta)};
+  };
   power_ = 0.0;
-  if (m >= 0.0) {
-    const double eta = map_->efficiency(in_.p(), in_.T(), pb, speed_);
-    const double T0out = in_.T() * (1.0 + (std::pow(pb / in_.p(), k) - 1.0) / eta);
-    const FaceState f = massFlowFace(g, s, m, T0out);
+  const double pb0 = closedFacePressure(g, s);
+  const double m0 = map_->massFlow(pin, Tin, pb0, speed_);
+  if (m0 > 0.0) {  // delivery at the face static pressure
+    const FaceState f = demandInflowFace(g, s, supply);
     const EndFlux F = faceFlux(g, f.rho, f.u_in, f.p, s.A);
     end_.setFlux(F);
     mdot_ = F.mdot_in;
-    const double e_in = mdot_ * g.cp() * in_.T();
+    const double e_in = mdot_ * g.cp() * Tin;
     in_.addFlow(-mdot_, -e_in);
     power_ = F.energy_in - e_in;
   } else {  // surge back flow: gas leaves the pipe into the inlet volume
-    const FaceState f = massFlowFace(g, s, m, 0.0);
+    const FaceState f = massFlowFace(g, s, m0, 0.0);
     mdot_ = applyFace(f, end_, &in_);
   }
 }
