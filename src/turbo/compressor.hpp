@@ -44,6 +44,11 @@ class Compressor {
                                 double speed_rad_s) const {
     return evaluate(p_in_Pa, T_in_K, p_out_Pa, speed_rad_s).outlet_total_temperature_K;
   }
+  /// Isentropic efficiency [-]. Outside the map (Π ≤ 1 on the choke side) the isentropic form
+  /// T_1(1 + (Π^k − 1)/η) is not the energy balance: use outletTotalTemperature() there.
+  double efficiency(double p_in_Pa, double T_in_K, double p_out_Pa, double speed_rad_s) const {
+    return evaluate(p_in_Pa, T_in_K, p_out_Pa, speed_rad_s).eta;
+  }
 
   const CompressorMap& map() const { return map_; }
   const Gas& gas() const { return gas_; }

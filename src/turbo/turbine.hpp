@@ -39,6 +39,10 @@ class TurbineEntry {
   double massFlow(double p_in_Pa, double T_in_K, double p_out_Pa, double speed_rad_s) const {
     return evaluate(p_in_Pa, T_in_K, p_out_Pa, speed_rad_s).mass_flow_kg_s;
   }
+  /// Total-to-static efficiency [-]; T_4 = T_3 (1 − η (1 − ER^(−k))) everywhere.
+  double efficiency(double p_in_Pa, double T_in_K, double p_out_Pa, double speed_rad_s) const {
+    return evaluate(p_in_Pa, T_in_K, p_out_Pa, speed_rad_s).eta;
+  }
   const TurbineMap& map() const { return map_; }
   double share() const { return share_; }
 
