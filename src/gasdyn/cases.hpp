@@ -33,7 +33,8 @@ struct ResonanceResult {
 };
 ResonanceResult runQuarterWave(SolverKind solver, int cells, double periods = 12.0);
 
-/// Cost of one solver: a closed pipe with a pressure step, `steps` steps [ns per cell-step].
+/// Cost of one solver: a closed pipe with a pressure step advanced `steps` network steps; thread
+/// CPU time per cell-step [ns] (includes the per-step boundary and network overhead).
 double benchCellStep(SolverKind solver, int cells, long steps);
 
 SolverKind parseSolver(const std::string& s);  // "fsm" | "tvd"; throws InputError

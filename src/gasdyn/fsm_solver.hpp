@@ -43,6 +43,7 @@ class FsmSolver final : public PipeSolver {
  private:
   void updatePrimitives(int i);
   double faceVelocity(int j) const;
+  double wallHeat(int i, double dt, double r_new) const;
   CellFault findFault() const;
 
   PerfectGas gas_;
@@ -54,6 +55,7 @@ class FsmSolver final : public PipeSolver {
   // ports (n+1): mass flux [kg/s]; ports 0 and n are set by the boundaries
   std::vector<double> m_, uf_;  // uf_: port velocity m/(rho_mean A) [m/s]
   std::vector<double> u_init_;
+  std::vector<double> inv_V_, inv_Af_, fric_;  // 1/V_c, 1/A_p, f_D/(2 D_p)
   double max_speed_ = 0.0;
 };
 

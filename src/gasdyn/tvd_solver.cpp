@@ -29,6 +29,12 @@ TvdSolver::TvdSolver(const PerfectGas& gas, const PipeConfig& cfg, const PipeGeo
   for (auto* v : {&am1_, &am2_, &am3_, &ap1_, &ap2_, &ap3_, &z1_, &z2_, &z3_, &ut_, &ct_, &Ht_,
                   &ft1_, &ft2_, &ft3_})
     v->assign(n_ + 1, 0.0);
+  inv_V_.resize(n_);
+  fric_k_.resize(n_);
+  for (int i = 0; i < n_; ++i) {
+    inv_V_[i] = 1.0 / geo_.V_cell[i];
+    fric_k_[i] = cfg_.friction_darcy / (2.0 * geo_.D_cell[i]) * geo_.A_cell[i];
+  }
   for (int i = 0; i < n_; ++i) setState(i, 1.2, 0.0, 1e5);
 }
 
@@ -70,7 +76,7 @@ void TvdSolver::faceWaves() {
     const double ut = (sr[i] * u[i] + sr[j] * u[j]) * w;
     const double Ht = (sr[i] * H[i] + sr[j] * H[j]) * w;
     const double c2 = std::max(gm1 * (Ht - 0.5 * ut * ut), 1e-12);
-    const double ct = std::sqrt(c2), ic2 = gm1 / c2, i2c = 0.5 / ct;
+    const double ct = std::sqrt(c2), rc = 1.0 / ct, ic2 = gm1 * rc * rc, i2c = 0.5 * rc;
     const double hu = Ht - ut * ut;
     // wave strengths of the jump in q
     const double d1 = q1[j] - q1[i], d2 = q2[j] - q2[i], d3 = q3[j] - q3[i];
@@ -162,17 +168,18 @@ CellFault TvdSolver::step(double dt, const EndFlux& left, const EndFlux& right) 
     am2_[n] = right.momentum - Ac[i] * (q2_[i] * u_[i] + p_[i]) - Sm;
     am3_[n] = -right.energy_in - Ac[i] * q2_[i] * H_[i];
   }
-  const double* V = geo_.V_cell.data();
+  const double* iV = inv_V_.data();
+  const double* fk = fric_k_.data();
   const bool heat = cfg_.heat != WallHeat::None;
   const double gm1 = gas_.gamma - 1.0, cv = gas_.cv(), Rg = gas_.R, Tw = cfg_.T_wall;
   double vmax = 0.0;
   bool ok = true;
   for (int i = 0; i < n; ++i) {
-    const double inv = dt / V[i];
+    const double inv = dt * iV[i];
     const double r = q1_[i] - inv * (ap1_[i] + am1_[i + 1] + ft1_[i + 1] - ft1_[i]);
     const double mu = q2_[i] - inv * (ap2_[i] + am2_[i + 1] + ft2_[i + 1] - ft2_[i]);
     double Et = q3_[i] - inv * (ap3_[i] + am3_[i + 1] + ft3_[i + 1] - ft3_[i]);
-    const double u = mu / r;
+    const double ir = 1.0 / r, u = mu * ir;
     if (heat) {
       const double T = p_[i] / (rho_[i] * Rg);
       const double h = cfg_.heat == WallHeat::GivenCoefficient
@@ -188,11 +195,11 @@ CellFault TvdSolver::step(double dt, const EndFlux& left, const EndFlux& right) 
     rho_[i] = r;
     u_[i] = u;
     p_[i] = p;
-    H_[i] = (Et + p) / r;
-    const double c = std::sqrt(std::abs(gas_.gamma * p / r));
+    H_[i] = (Et + p) * ir;
+    const double c = std::sqrt(std::abs(gas_.gamma * p * ir));
     c_[i] = c;
     srho_[i] = std::sqrt(std::abs(r));
-    fr_[i] = -cfg_.friction_darcy / (2.0 * geo_.D_cell[i]) * mu * std::abs(u) * Ac[i];
+    fr_[i] = -fk[i] * mu * std::abs(u);
     vmax = std::max(vmax, std::abs(u) + c);
     ok &= (r > 0.0) & (p > 0.0) & (r < kHuge) & (p < kHuge);
   }

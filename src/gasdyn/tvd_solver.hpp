@@ -60,6 +60,7 @@ class TvdSolver final : public PipeSolver {
   std::vector<double> am1_, am2_, am3_, ap1_, ap2_, ap3_;
   std::vector<double> z1_, z2_, z3_, ut_, ct_, Ht_;
   std::vector<double> ft1_, ft2_, ft3_;
+  std::vector<double> inv_V_, fric_k_;  // 1/V_i, f_D A/(2 D) per cell
   double max_speed_ = 0.0;
 };
 

@@ -131,3 +131,23 @@ TEST(Network, InputValidation) {
   EXPECT_THROW(net.addPipe(bad), hbt::InputError);
   EXPECT_THROW(net.addVolume("v", 0.0, 1e5, 300.0), hbt::InputError);
 }
+
+TEST_P(BothSolvers, WallHeatTransferRelaxesExponentially) {
+  // closed pipe at rest, uniform gas at 500 K, wall 300 K, h = 200 W/(m^2 K):
+  // rho cv dT/dt = h (4/D) (T_w - T)  ->  T = T_w + (T0 - T_w) exp(-4 h t/(D rho cv))
+  Network net;
+  PipeConfig c;
+  c.name = "cooler", c.length = 0.5, c.cells = 20, c.solver = GetParam();
+  c.diameter_left = c.diameter_right = 0.02;
+  c.heat = WallHeat::GivenCoefficient, c.h_wall = 200.0, c.T_wall = 300.0;
+  Pipe& p = net.addPipe(c);
+  p.setUniform(2e5, 500.0);
+  net.close(p, End::Left);
+  net.close(p, End::Right);
+  const double rho = p.rho(0), tau = 0.02 * rho * net.gas().cv() / (4.0 * 200.0);
+  net.advance(tau);
+  const double expect = 300.0 + 200.0 * std::exp(-1.0);
+  std::printf("[heat %s] T(tau) %.3f K vs %.3f K\n", solverName(GetParam()), p.T(10), expect);
+  EXPECT_NEAR(p.T(10), expect, 0.005 * expect);
+  EXPECT_LT(std::abs(p.u(10)), 1e-6);
+}
