@@ -46,4 +46,17 @@ ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
   return src;
 }
 
+void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::string& file,
+                    std::vector<std::string> ignore_prefixes) {
+  ignore_prefixes.push_back("config_file");
+  applyParams(ps, loadParamSource(pnh, "", file), ignore_prefixes);
+}
+
+std::string resolvePackagePath(const ros::NodeHandle& nh, const std::string& path) {
+  if (path.empty() || path[0] == '/') return path;
+  std::string pkg;
+  nh.param<std::string>("/scenario/package_dir", pkg, ".");
+  return pkg + "/" + path;
+}
+
 }  // namespace hbt::cosim

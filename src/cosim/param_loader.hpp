@@ -16,4 +16,14 @@ namespace hbt::cosim {
 ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
                             const std::string& file);
 
+/// Applies the private parameters of a participant (`pnh`) to a model's ParamSet: the one call a
+/// node makes. `file` = the YAML they came from; the node's own key `config_file` and any key
+/// starting with one of `ignore_prefixes` are not reported as unknown. Throws hbt::InputError.
+void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::string& file,
+                    std::vector<std::string> ignore_prefixes = {});
+
+/// Resolves a data path given in a config file: absolute paths stay, relative paths are taken
+/// against the package root (scenario parameter /scenario/package_dir).
+std::string resolvePackagePath(const ros::NodeHandle& nh, const std::string& path);
+
 }  // namespace hbt::cosim

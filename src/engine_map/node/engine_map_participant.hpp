@@ -1,0 +1,34 @@
+// ROS bridge of the map-based engine (engine_model:=map): converts messages and parameters,
+// nothing else. Model: hbt::engine_map::MapEngine (../map_engine.hpp).
+//
+// Inputs  (stamped t_k): /vehicle/engine_command (EngineCommand: imposed speed, torque request).
+// Outputs (stamped t_k): /engine/state (EngineState), /engine/exhaust (ExhaustState),
+//                        /engine/heat (EngineHeat).
+// Parameters: private namespace = config/engine_map.yaml; /scenario/ambient_temperature_c.
+#pragma once
+#include <hybrid_bus_twin/EngineCommand.h>
+
+#include <memory>
+
+#include "cosim/participant.hpp"
+#include "engine_map/map_engine.hpp"
+
+namespace hbt::engine_map {
+
+class EngineMapParticipant : public cosim::Participant {
+ public:
+  EngineMapParticipant(ros::NodeHandle nh, ros::NodeHandle pnh) : Participant(nh, pnh) {}
+
+ protected:
+  void configure() override;
+  void publishOutputs(const ros::Time& t) override;
+  void step(const ros::Time& t, double dt_s) override;
+
+ private:
+  std::unique_ptr<MapEngine> engine_;
+  cosim::Input<hybrid_bus_twin::EngineCommand>* command_ = nullptr;
+  ros::Publisher state_pub_, exhaust_pub_, heat_pub_;
+  double speed_rad_s_ = 0.0, ambient_T_K_ = 298.15, last_cpu_s_ = 0.0;
+};
+
+}  // namespace hbt::engine_map
