@@ -17,6 +17,7 @@ Cylinder::Cylinder(const CylinderParams& params, const std::string& name)
       thermo_(params.fuel, params.constant_cp, params.constant_cp_T_K),
       crank_(params.geometry) {
   if (P_.soi_main.empty()) P_.finalize();
+  woschni_pre_ = P_.woschni.multiplier * P_.woschni.C0 * std::pow(P_.geometry.bore_m, -0.2);
   initialize(-360.0, 1e5, 300.0, 0.0);
 }
 
@@ -237,11 +238,14 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
   if (heat_transfer_on_) {
     const double Tm = p0 * V0 / mR0;
     const double cm = crank_.meanPistonSpeed(omega);
-    const double pmot = closed_ ? pr_ * std::exp(nr_ * std::log(Vr_ / V0)) : p0;
+    const bool comb = closed_ && combustion_started_;
+    const double pmot = comb ? pr_ * std::exp(nr_ * std::log(Vr_ / V0)) : p0;
     const Geometry& G = crank_.geometry();
-    const double w = P_.woschni.velocity(!closed_, combustion_started_, cm, G.bore_m,
-                                         G.stroke_m, crank_.displacement(), Tr_, pr_, Vr_, p0, pmot);
-    const double h = P_.woschni.multiplier * woschniCoefficient(G.bore_m, p0, Tm, w, P_.woschni.C0);
+    const double w = P_.woschni.velocity(!closed_, comb, cm, G.bore_m, G.stroke_m,
+                                         crank_.displacement(), Tr_, pr_, Vr_, p0, pmot);
+    // woschniCoefficient() with the bore factor precomputed: C0 B^−0.2 (p[kPa] w)^0.8 T^−0.55
+    const double h = woschni_pre_ * std::exp(0.8 * std::log(p0 * 1e-3 * std::max(w, 1e-6)) -
+                                             0.55 * std::log(Tm));
     const double Ah = crank_.headArea(), Ap = crank_.pistonCrownArea(),
                  Al = M_PI * G.bore_m * (travel0 + G.top_land_height_m);
     const double A = Ah + Ap + Al, AT = Ah * Thead_ + Ap * Tpiston_ + Al * Tliner_;
@@ -300,7 +304,9 @@ void Cylinder::solveTemperatures(double V0, double V1, double Vu0, double Vb0, d
   const double p0 = p_;
   const Poly& Pu = Pu_;
   if (!two_zone_) {
-    double T = Tu_;
+    // Predictor: isentropic change over the step (linearised), then Newton.
+    const double cv = Pu.cp(Tu_) - Pu.R;
+    double T = Tu_ * (1.0 - Pu.R / cv * (V1 - V0) / V1) + (Uu - Pu.u(Tu_)) / cv;
     for (int it = 0; it < 40; ++it) {
       const double p1 = Pu.R * T / V1;
       const double F = Pu.u(T) - Uu + 0.5 * (p0 + p1) * (V1 - Vu0);

@@ -163,6 +163,7 @@ class Cylinder {
   double Tu_ = 300, Tb_ = 300, Vu_ = 0, Vb_ = 0, travel_ = 0;
   Poly Pu_, Pb_;            // extensive zone polynomials of the current masses
   double m_ = 0, mR_ = 0;   // total mass and Σ m R
+  double woschni_pre_ = 0;  // multiplier C0 B^−0.2
   bool two_zone_ = false, closed_ = false, combustion_started_ = false;
   // IVC reference for Woschni
   double pr_ = 1e5, Vr_ = 1e-3, Tr_ = 300, nr_ = 1.35;

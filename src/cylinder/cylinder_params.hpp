@@ -57,9 +57,9 @@ struct CylinderParams {
   WallTemperatures walls;
   ChenFlynn friction;
   bool nox_enabled = true;
-  double nox_interval_deg = 2.0;
+  double nox_interval_deg = 5.0;
   double nox_min_temperature_K = 1700.0;
-  double max_substep_deg = 0.5;
+  double max_substep_deg = 1.0;
 
   CylinderParams();                  // typical HD common-rail defaults (see README)
   void declare(ParamSet& ps);        // keys "cylinder/<group>/<name>"

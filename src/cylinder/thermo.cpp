@@ -111,22 +111,6 @@ double sR(Species s, double T) {
 }
 double gRT(Species s, double T) { return hRT(s, T) - sR(s, T); }
 
-void Poly::addScaled(const Poly& o, double w) {
-  for (int k = 0; k < 6; ++k) {
-    lo[k] += w * o.lo[k];
-    hi[k] += w * o.hi[k];
-  }
-  R += w * o.R;
-}
-double Poly::cp(double T) const {
-  const double* c = T < kTmid ? lo : hi;
-  return c[0] + T * (c[1] + T * (c[2] + T * (c[3] + T * c[4])));
-}
-double Poly::h(double T) const {
-  const double* c = T < kTmid ? lo : hi;
-  return T * (c[0] + T * (c[1] / 2 + T * (c[2] / 3 + T * (c[3] / 4 + T * c[4] / 5)))) + c[5];
-}
-
 GasThermo::GasThermo(const FuelSpec& fuel, bool constant_cp, double T_const) : fuel_(fuel) {
   // Air by mole -> mass fractions.
   const double xAir[4] = {0.78084, 0.20946, 0.00934, 0.00036};

@@ -54,9 +54,21 @@ struct Poly {
   double lo[6] = {0, 0, 0, 0, 0, 0};
   double hi[6] = {0, 0, 0, 0, 0, 0};
   double R = 0.0;  // J/(kg K)
-  void addScaled(const Poly& o, double w);   // this += w * o (extensive sums)
-  double cp(double T) const;
-  double h(double T) const;
+  void addScaled(const Poly& o, double w) {  // this += w * o (extensive sums)
+    for (int k = 0; k < 6; ++k) {
+      lo[k] += w * o.lo[k];
+      hi[k] += w * o.hi[k];
+    }
+    R += w * o.R;
+  }
+  double cp(double T) const {
+    const double* c = T < 1000.0 ? lo : hi;
+    return c[0] + T * (c[1] + T * (c[2] + T * (c[3] + T * c[4])));
+  }
+  double h(double T) const {
+    const double* c = T < 1000.0 ? lo : hi;
+    return T * (c[0] + T * (c[1] / 2 + T * (c[2] / 3 + T * (c[3] / 4 + T * c[4] / 5)))) + c[5];
+  }
   double u(double T) const { return h(T) - R * T; }
 };
 
