@@ -124,3 +124,25 @@ TEST(Params, AppliesValuesAndNamesBadKeys) {
   }
   EXPECT_NO_THROW(hbt::applyParams(ps, src, {"mas_"}));
 }
+
+#include "common/yaml_params.hpp"
+
+TEST(YamlParams, FlattensNestedKeysAndNamesBadInput) {
+  const auto src = hbt::parseYamlParams(
+      "# comment\nvehicle:\n  mass_kg: 15160  # curb\n  name: bus\n  on: true\n"
+      "ratios: [3.364, 1.909,\n   1.421]\n",
+      "x.yaml");
+  EXPECT_DOUBLE_EQ(std::get<double>(src.values.at("vehicle/mass_kg")), 15160.0);
+  EXPECT_EQ(std::get<std::string>(src.values.at("vehicle/name")), "bus");
+  EXPECT_TRUE(std::get<bool>(src.values.at("vehicle/on")));
+  EXPECT_EQ(std::get<std::vector<double>>(src.values.at("ratios")).size(), 3u);
+  try {
+    hbt::parseYamlParams("ratios: [1, x]\n", "bad.yaml");
+    FAIL();
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.key(), "ratios");
+    EXPECT_EQ(e.file(), "bad.yaml");
+  }
+  EXPECT_THROW(hbt::parseYamlParams("a: [1, 2\n", "syntax.yaml"), hbt::InputError);
+  EXPECT_THROW(hbt::readYamlParams("/nonexistent.yaml"), hbt::InputError);
+}

@@ -6,7 +6,7 @@
 #include "common/params.hpp"
 #include "cylinder/cylinder_params.hpp"
 #include "cylinder/rig.hpp"
-#include "cylinder/yaml_params.hpp"
+#include "common/yaml_params.hpp"
 
 namespace hbt::cyl::test {
 

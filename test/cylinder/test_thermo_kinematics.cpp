@@ -84,7 +84,7 @@ TEST(Params, ConfigFileLoadsAndBadKeysAreNamed) {
   EXPECT_DOUBLE_EQ(cp.rail_pressure(1200, 0.5), 0.5 * (1000 + 1300));  // bilinear
   EXPECT_DOUBLE_EQ(rp.speed_rpm, 1400.0);
   // A misspelt key and a table of the wrong size are rejected with file and key.
-  hbt::ParamSource src = parseYamlParams("cylinder:\n  geometry:\n    bore_mm: 104\n", "x.yaml");
+  hbt::ParamSource src = hbt::parseYamlParams("cylinder:\n  geometry:\n    bore_mm: 104\n", "x.yaml");
   CylinderParams c2;
   hbt::ParamSet ps;
   c2.declare(ps);
@@ -95,7 +95,7 @@ TEST(Params, ConfigFileLoadsAndBadKeysAreNamed) {
     EXPECT_EQ(e.file(), "x.yaml");
     EXPECT_EQ(e.key(), "cylinder/geometry/bore_mm");
   }
-  src = parseYamlParams("cylinder:\n  injection:\n    soi_main_deg: [1, 2,\n      3]\n", "y.yaml");
+  src = hbt::parseYamlParams("cylinder:\n  injection:\n    soi_main_deg: [1, 2,\n      3]\n", "y.yaml");
   hbt::applyParams(ps, src);
   try {
     c2.finalize("y.yaml");

@@ -2,7 +2,8 @@
 // steady turbocharger matching (shaft power balance by bisection on speed), the YAML
 // configuration, and look-up cost / no allocation.
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
+
+#include "common/yaml_params.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -73,31 +74,6 @@ Rated ratedPoint(double bsfc, double lambda) {
   return r;
 }
 
-hbt::ParamSource loadYaml(const std::string& path) {
-  hbt::ParamSource src;
-  src.file = path;
-  std::function<void(const YAML::Node&, const std::string&)> walk =
-      [&](const YAML::Node& n, const std::string& key) {
-        if (n.IsMap()) {
-          for (const auto& kv : n)
-            walk(kv.second, key.empty() ? kv.first.as<std::string>()
-                                        : key + "/" + kv.first.as<std::string>());
-        } else if (n.IsSequence()) {
-          std::vector<double> v;
-          for (const auto& e : n) v.push_back(e.as<double>());
-          src.set(key, v);
-        } else {
-          const std::string s = n.as<std::string>();
-          char* end = nullptr;
-          const double d = std::strtod(s.c_str(), &end);
-          if (s == "true" || s == "false") src.set(key, s == "true");
-          else if (end && *end == '\0' && !s.empty()) src.set(key, d);
-          else src.set(key, s);
-        }
-      };
-  walk(YAML::LoadFile(path), "");
-  return src;
-}
 
 }  // namespace
 
@@ -209,7 +185,7 @@ TEST(Config, YamlFileLoadsAndMatchesBuiltInDefaults) {
   cfg.source = path;
   hbt::ParamSet ps;
   cfg.declare(ps, "turbo/");
-  hbt::applyParams(ps, loadYaml(path));
+  hbt::applyParams(ps, hbt::readYamlParams(path));
   TurboConfig def;
   hbt::ParamSet pd;
   def.declare(pd, "turbo/");
@@ -217,13 +193,13 @@ TEST(Config, YamlFileLoadsAndMatchesBuiltInDefaults) {
   const auto t = buildTurbocharger(cfg, repoRoot());
   EXPECT_NEAR(t.scaling.flow_factor, defaultTurbo().scaling.flow_factor, 1e-12);
   // misspelt key, out-of-range value, missing map file: errors name file and key
-  auto src = loadYaml(path);
+  auto src = hbt::readYamlParams(path);
   src.set("turbo/shaft/inertia_kgm2", 1e-4);
   try { hbt::applyParams(ps, src); FAIL(); } catch (const hbt::InputError& e) {
     EXPECT_EQ(e.key(), "turbo/shaft/inertia_kgm2");
     EXPECT_EQ(e.file(), path);
   }
-  src = loadYaml(path);
+  src = hbt::readYamlParams(path);
   src.set("turbo/scaling/lambda", 0.5);
   try { hbt::applyParams(ps, src); FAIL(); } catch (const hbt::InputError& e) {
     EXPECT_EQ(e.key(), "turbo/scaling/lambda");
