@@ -1,0 +1,222 @@
+// VehicleModel: construction, macro step (shift decision, substeps, driver + idle governor).
+#include "vehicle/vehicle_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/errors.hpp"
+
+namespace hbt::vehicle {
+namespace {
+
+std::string resolve(const std::string& base, const std::string& path) {
+  if (base.empty() || path.empty() || path[0] == '/') return path;
+  return base + (base.back() == '/' ? "" : "/") + path;
+}
+
+}  // namespace
+
+VehicleModel::VehicleModel(const VehicleParams& p, const std::string& base_dir) : p_(p) {
+  p_.validate();
+  const auto& d = p_.driveline;
+  const auto& c = p_.chassis;
+  road_ = RoadLoad(c);
+  tc_ = TorqueConverter(resolve(base_dir, d.torque_converter_file), d.tc_reference_speed_rad_s);
+  gl_ = GearLossMap(resolve(base_dir, d.gear_loss_map_file));
+  ret_ = RetarderLoss(resolve(base_dir, d.retarder_loss_file));
+  shift_ = ShiftStrategy(p_.shift, d.gear_ratios, d.idle_speed_rad_s);
+  const double m = p_.totalMass_kg();
+  driver_ = Driver(p_.driver, m);
+  F_brake_max_ = driver_.maxBrakeForce();
+  const double r = c.tyre_radius_m;
+  M_ = m + (c.tyres_front + c.tyres_rear) * c.wheel_inertia_kg_m2 / (r * r);
+  ia_r_ = d.axle_ratio / r;
+  k_.assign(d.gear_ratios.size() + 1, 0.0);
+  for (std::size_t g = 1; g <= d.gear_ratios.size(); ++g) k_[g] = d.gear_ratios[g - 1] * ia_r_;
+  J_E_ = d.engine_inertia_kg_m2 + d.tc_pump_inertia_kg_m2;
+  J_GI_ = d.gearbox_input_inertia_kg_m2;
+  reset(0.0, 0, d.idle_speed_rad_s);
+}
+
+void VehicleModel::setGradeProfile(const std::vector<double>& s, const std::vector<double>& g) {
+  grade_profile_ = Table1D(s, g, "grade profile", "distance_m");
+}
+
+void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
+  const int n = static_cast<int>(p_.driveline.gear_ratios.size());
+  if (gear < 0 || gear > n) throw InputError("(vehicle reset)", "gear", "out of range");
+  if (!std::isfinite(v) || !std::isfinite(w_e)) throw InputError("(vehicle reset)", "speed", "not finite");
+  out_ = VehicleOutputs{};
+  v_ = std::max(v, 0.0);
+  w_ = std::max(w_e, 0.0);
+  s_ = distance_m;
+  h_ = 0.0;
+  t_since_shift_ = 1e9;
+  T_in_est_ = T_ax_est_ = 0.0;
+  brake_force_ = accel_pedal_ = idle_integral_ = 0.0;
+  hold_ = start_request_ = locking_ = false;
+  last_dv_ = 0.0;
+  driver_.reset();
+  if (gear == 0) {
+    gs_ = {DriveMode::Neutral, 0};
+  } else if (gear == 1 && v_ * k_[1] < p_.shift.lockup_min_turbine_speed_rad_s) {
+    gs_ = {DriveMode::Converter, 1};
+  } else {
+    gs_ = {DriveMode::Locked, gear};
+    w_ = k_[gear] * v_;
+  }
+  out_.energy.kinetic_initial_J = out_.energy.kinetic_J = kineticEnergy();
+  out_.engine_speed_rad_s = w_;
+  out_.speed_m_s = v_;
+  out_.distance_m = s_;
+  out_.gear = gs_.gear;
+  out_.mode = gs_.mode;
+}
+
+double VehicleModel::auxPower(const VehicleInputs& in) const {
+  const auto& a = p_.aux;
+  return a.steering_pump_W + a.air_compressor_W + a.alternator_W +
+         (in.has_fan_power ? in.fan_power_W : a.fan_default_W);
+}
+
+const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
+  const double vals[] = {in.target_speed_m_s, in.target_accel_m_s2, in.road_grade,
+                         in.engine_torque_Nm, in.engine_max_torque_Nm, in.engine_min_torque_Nm,
+                         in.em_torque_Nm, in.fan_power_W, in.ambient_T_K,
+                         in.accel_pedal_cmd, in.brake_pedal_cmd};
+  for (double x : vals)
+    if (!std::isfinite(x)) throw ModelDivergence("vehicle", "inputs", "non-finite input");
+  if (!(dt > 0.0)) throw ModelDivergence("vehicle", "dt", "must be > 0");
+
+  const double grade = grade_profile_.empty() ? in.road_grade : grade_profile_(s_);
+  if (!in.driver_enabled) {
+    brake_force_ = std::clamp(in.brake_pedal_cmd, 0.0, 1.0) * F_brake_max_;
+    accel_pedal_ = std::clamp(in.accel_pedal_cmd, 0.0, 1.0);
+    start_request_ = accel_pedal_ > 0.0;
+    hold_ = v_ == 0.0 && brake_force_ > 0.0 && accel_pedal_ == 0.0;
+  }
+
+  // 1. Shift / lock-up decision at the start of the step.
+  GearState target = gs_;
+  if (in.neutral_request) {
+    target = {DriveMode::Neutral, 0};
+  } else {
+    ShiftInputs si;
+    si.engine_speed_rad_s = w_;
+    si.gearbox_input_speed_rad_s = gearboxInputSpeed(v_, w_);
+    si.output_speed_rad_s = v_ * ia_r_;
+    si.accel_pedal = accel_pedal_;
+    si.time_since_shift_s = t_since_shift_;
+    si.stopped_and_held = v_ == 0.0 && hold_;
+    si.start_request = start_request_;
+    target = shift_.decide(gs_, si);
+  }
+  const int gear_before = gs_.gear;
+  if (target != gs_) transition(target);
+  out_.gear_changed = gs_.gear != gear_before;
+
+  // 2. Integrate the macro step with the inputs held.
+  StepConst c;
+  c.T_e = in.engine_torque_Nm;
+  c.T_em = in.em_torque_Nm;
+  c.P_aux = auxPower(in);
+  c.F_brake = brake_force_;
+  c.grade = grade;
+  c.rho = road_.airDensity(in.ambient_T_K);
+  const double v_start = v_;
+  const int n = std::max(1, static_cast<int>(std::ceil(dt / p_.numerics.max_substep_s - 1e-9)));
+  for (int i = 0; i < n; ++i) substep(dt / n, c);
+  if (!std::isfinite(v_) || !std::isfinite(w_))
+    throw ModelDivergence("vehicle", "state", "speed became non-finite");
+  t_since_shift_ += dt;
+
+  // 3. Driver and idle governor at t + dt: pedals, brake force and torque request.
+  evaluateDriver(dt, in);
+
+  out_.speed_m_s = v_;
+  out_.accel_m_s2 = (v_ - v_start) / dt;
+  out_.distance_m = s_;
+  out_.altitude_m = h_;
+  out_.grade = grade_profile_.empty() ? in.road_grade : grade_profile_(s_);
+  out_.engine_speed_rad_s = w_;
+  out_.gear = gs_.gear;
+  out_.mode = gs_.mode;
+  out_.tc_locked = gs_.mode == DriveMode::Locked || gs_.mode == DriveMode::Shifting;
+  const double w_in = gearboxInputSpeed(v_, w_);
+  out_.gearbox_input_speed_rad_s = gs_.mode == DriveMode::Neutral ? 0.0 : w_in;
+  if (gs_.mode == DriveMode::Converter) {
+    out_.tc_speed_ratio = tc_.speedRatio(w_, w_in);
+    out_.tc_pump_torque_Nm = tc_.pumpTorque(w_, w_in);
+    out_.tc_turbine_torque_Nm = tc_.turbineTorque(w_, w_in);
+  } else {
+    out_.tc_speed_ratio = out_.tc_locked ? 1.0 : 0.0;
+    out_.tc_pump_torque_Nm = out_.tc_turbine_torque_Nm = 0.0;
+  }
+  out_.aux_power_W = c.P_aux;
+  out_.energy.kinetic_J = kineticEnergy();
+  return out_;
+}
+
+void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
+  const auto& d = p_.driveline;
+  const double grade = grade_profile_.empty() ? in.road_grade : grade_profile_(s_);
+  StepConst c{0.0, in.em_torque_Nm, auxPower(in), 0.0, grade, road_.airDensity(in.ambient_T_K)};
+  const Rates r = rates(v_, w_, c, 1);  // present loss torques (T_e = 0)
+  const double T_min = in.engine_min_torque_Nm;
+  double T_max = std::max(in.engine_max_torque_Nm, T_min);
+  const double T_loss_crank = r.T_aux + r.T_drag - in.em_torque_Nm;
+  const double F_drag_out = ia_r_ * (r.T_ret + r.T_axl);
+  double M_eff = M_, F_min = 0.0, F_max = 0.0;
+  const bool locked = gs_.mode == DriveMode::Locked || gs_.mode == DriveMode::Shifting;
+  const int g = locked ? gs_.gear : 1;
+  const double k = k_[g];
+  const double mu = locked ? 1.0 : tc_.torqueRatio(tc_.speedRatio(w_, v_ * k_[1]));
+  const double limit = d.gear_max_input_torque_Nm[g - 1];
+  if (limit > 0.0) T_max = std::min(T_max, std::max(T_min, limit / mu));
+  if (locked) M_eff += (J_E_ + J_GI_) * k * k;
+  else M_eff += J_GI_ * k * k;
+  F_min = k * (mu * (T_min - T_loss_crank) - r.T_gload) - F_drag_out;
+  F_max = k * (mu * (T_max - T_loss_crank) - r.T_gload) - F_drag_out;
+  const double F_ff = M_eff * in.target_accel_m_s2 + road_.rolling(grade) +
+                      road_.aero(v_, c.rho) + road_.gradeForce(grade);
+
+  double accel = 0.0;
+  if (in.driver_enabled) {
+    const DriverCommand cmd = driver_.update(dt, v_, in.target_speed_m_s, F_ff, F_min, F_max);
+    accel = cmd.accel_pedal;
+    brake_force_ = cmd.brake_force_N;
+    hold_ = cmd.hold;
+    start_request_ = !driver_.stopRequested(in.target_speed_m_s);
+    out_.brake_pedal = cmd.brake_pedal;
+  } else {
+    driver_.reset();
+    accel = std::clamp(in.accel_pedal_cmd, 0.0, 1.0);
+    brake_force_ = std::clamp(in.brake_pedal_cmd, 0.0, 1.0) * F_brake_max_;
+    out_.brake_pedal = std::clamp(in.brake_pedal_cmd, 0.0, 1.0);
+  }
+  accel_pedal_ = accel;
+  const double T_driver = T_min + accel * (T_max - T_min);
+
+  // Idle governor: PI on (ω_idle - ω_e) with the present load as feed-forward; acts as a floor
+  // under the driver's demand (integrates only while it is the active demand).
+  const double e = d.idle_speed_rad_s - w_;
+  const double T_load = r.T_aux + r.T_drag + (gs_.mode == DriveMode::Converter ? r.T_pump : 0.0);
+  const auto& dp = p_.driver;
+  double T_gov = T_load + dp.idle_kp_Nm_s * e + dp.idle_ki_Nm * idle_integral_;
+  if (T_gov > T_driver && dp.idle_ki_Nm > 0.0) {
+    idle_integral_ = std::clamp(idle_integral_ + e * dt, -200.0 / dp.idle_ki_Nm, 400.0 / dp.idle_ki_Nm);
+    T_gov = T_load + dp.idle_kp_Nm_s * e + dp.idle_ki_Nm * idle_integral_;
+  }
+  double demand = std::clamp(std::max(T_driver, T_gov), T_min, std::max(in.engine_max_torque_Nm, T_min));
+  // TCU torque intervention in the inertia phase of an upshift: the engine gives up the torque
+  // that the clutch would otherwise add by slowing the engine (smooth output torque).
+  if (gs_.mode == DriveMode::Shifting && shift_slip0_ > 0.0 && p_.shift.shift_torque_intervention)
+    demand = std::max(T_min, demand - (J_E_ + J_GI_) * shift_slip0_ / p_.shift.shift_duration_s);
+  out_.crank_torque_demand_Nm = demand;
+  out_.engine_torque_request_Nm = demand - in.em_torque_Nm;
+  out_.accel_pedal = accel;
+  out_.brake_force_N = brake_force_;
+  out_.stop_hold = hold_;
+}
+
+}  // namespace hbt::vehicle

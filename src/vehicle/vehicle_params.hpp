@@ -1,0 +1,102 @@
+// Parameters of the vehicle, driveline, shift strategy, driver and auxiliaries (SI units).
+// Keys (group/key) = config/vehicle.yaml, where every value's source is documented.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "common/params.hpp"
+#include "common/units.hpp"
+
+namespace hbt::vehicle {
+
+struct ChassisParams {
+  double curb_mass_kg = 15160.0;          // SPEC §2
+  double payload_kg = 1500.0;             // scenario parameter, SPEC §2 default
+  double cda_m2 = 5.36;                   // drag area Cd·A (VECTO 2015 AT-TC demo city bus)
+  double ambient_pressure_Pa = 101325.0;  // air density ρ = p/(R_air T_ambient)
+  double air_R_J_kgK = 287.05;
+  double rrc_front = 0.0055;              // RRC_ISO axle 1 (P31 XML)
+  double rrc_rear = 0.0063;               // RRC_ISO axle 2, twin tyres (P31 XML)
+  double front_axle_load_share = 0.38;    // static axle load share (VECTO AT-TC city bus)
+  int tyres_front = 2;
+  int tyres_rear = 4;
+  double tyre_fz_iso_N = 31300.0;         // ISO test load F_zISO (P31 XML)
+  double rrc_load_exponent = 0.9;         // VECTO β: RRC = RRC_ISO (F_z/F_zISO)^(β-1)
+  double wheel_inertia_kg_m2 = 14.9;      // per tyre, Wheels.csv 315/70 R22.5
+  double tyre_radius_m = 0.4915;          // dynamic radius: d·3.05/(2π), d = 1012.5 mm
+};
+
+struct DrivelineParams {
+  std::vector<double> gear_ratios{3.364, 1.909, 1.421, 1.000, 0.720, 0.615};  // APT-S
+  std::vector<double> gear_max_input_torque_Nm{1900.0, 1900.0, 0.0, 0.0, 0.0, 0.0};  // 0 = none
+  std::vector<double> gear_load_loss_factor{1.0, 1.0, 1.0, 0.0, 1.0, 1.0};  // × load part of map
+  double axle_ratio = 6.5;                // P31 XML single portal axle
+  double axle_efficiency = 0.95;          // VECTO AT-TC demo city bus
+  std::string gear_loss_map_file =
+      "config/data/vehicle/generic_primary_bus_P31/gear_loss_map_gears2_3_5_6.csv";
+  std::string torque_converter_file =
+      "config/data/vehicle/generic_primary_bus_P31/torque_converter_APT-S_standard_values.vtcc";
+  std::string retarder_loss_file =
+      "config/data/vehicle/generic_primary_bus_P31/retarder_loss_map.csv";  // "" = none
+  double tc_reference_speed_rad_s = units::rpmToRadps(1000.0);  // MP1000 reference
+  double engine_inertia_kg_m2 = 3.8;      // crank + flywheel (VECTO AT-TC demo 7.7 l engine)
+  double tc_pump_inertia_kg_m2 = 0.5;     // VECTO AT-TC demo TC inertia, on the pump side
+  double gearbox_input_inertia_kg_m2 = 0.3;  // turbine + input shaft + sets (assumption)
+  double idle_speed_rad_s = units::rpmToRadps(700.0);  // P31 XML idling speed
+};
+
+struct ShiftParams {
+  double upshift_speed_low_rad_s = units::rpmToRadps(1200.0);    // at accelerator 0
+  double upshift_speed_high_rad_s = units::rpmToRadps(2200.0);   // at accelerator 1
+  double downshift_speed_low_rad_s = units::rpmToRadps(850.0);   // at accelerator 0
+  double downshift_speed_high_rad_s = units::rpmToRadps(1100.0); // at accelerator 1
+  double hysteresis_rad_s = units::rpmToRadps(100.0);  // post-upshift speed >= downshift line + this
+  double max_speed_after_downshift_rad_s = units::rpmToRadps(2200.0);
+  double min_time_between_shifts_s = 2.0;
+  double shift_duration_s = 0.6;          // clutch-to-clutch slip (inertia) phase; 0 = impulse
+  bool shift_torque_intervention = true;  // TCU cuts engine torque by the inertia torque (upshift)
+  double lockup_speed_ratio = 0.85;       // 1C -> 1L when ν >= this ...
+  double lockup_min_turbine_speed_rad_s = units::rpmToRadps(1000.0);  // ... and ω_t >= this
+  double lockup_duration_s = 0.4;         // slip phase of the lock-up clutch; 0 = impulse
+  double unlock_engine_speed_rad_s = units::rpmToRadps(800.0);        // 1L -> 1C below this
+  bool neutral_at_stop = true;            // ZF EcoLife-like standstill neutral
+};
+
+struct DriverParams {
+  double kp_per_s = 1.0;                  // speed PI: ΔF = m (kp e + ki ∫e)
+  double ki_per_s2 = 0.3;
+  double max_brake_decel_m_s2 = 5.0;      // F_brake,max = m_total · this (UN R13 M3 ≥ 5 m/s²)
+  double stop_target_speed_m_s = 0.01;    // target below this = stop requested
+  double hold_speed_m_s = 0.5;            // stop requested and v below this: hold brake
+  double hold_brake_fraction = 0.3;       // hold brake pedal [-]
+  double idle_kp_Nm_s = 25.0;             // idle governor PI on ω_idle - ω_e
+  double idle_ki_Nm = 60.0;
+};
+
+struct AuxParams {
+  double steering_pump_W = 1000.0;        // mechanical, constant (documented estimate)
+  double air_compressor_W = 1500.0;       // mechanical, constant (documented estimate)
+  double alternator_W = 2500.0;           // mechanical input, constant (1.75 kW el. / 0.7)
+  double fan_default_W = 800.0;           // used until the cooling node provides fan power
+};
+
+struct NumericsParams {
+  double max_substep_s = 0.001;           // internal Heun substep
+};
+
+struct VehicleParams {
+  ChassisParams chassis;
+  DrivelineParams driveline;
+  ShiftParams shift;
+  DriverParams driver;
+  AuxParams aux;
+  NumericsParams numerics;
+  double totalMass_kg() const { return chassis.curb_mass_kg + chassis.payload_kg; }
+  /// Registers every parameter as "<group>/<key>" (groups chassis, driveline, shift, driver,
+  /// aux, numerics) = config/vehicle.yaml.
+  void declare(ParamSet& ps);
+  /// Cross-field checks (vector lengths, ordering of shift lines). Throws InputError(file, key).
+  void validate(const std::string& file = "(vehicle parameters)") const;
+};
+
+}  // namespace hbt::vehicle
