@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Benchmarks of the twin (full missions: minutes to hours; never part of the test suite).
+
+  scripts/twin bench [map]          baseline_urban, map engine, full mission, mode nodes and
+                                    nodelets: wall/simulated ratio, distance, fuel, per-node CPU
+  scripts/twin bench map --until S  the same on the first S seconds only
+Results: printed as a table and written to results/bench/<name>.json.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def run_scenario(scenario, out, args):
+    t0 = time.time()
+    cmd = [os.path.join(REPO, "scripts", "twin"), "run", scenario, "--out", out] + args
+    with open(out + ".log", "w") as log:
+        rc = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
+    wall = time.time() - t0
+    if rc != 0:
+        print("bench: %s %s failed (log %s.log)" % (scenario, " ".join(args), out), file=sys.stderr)
+        return None
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    with open(os.path.join(out, "status.json")) as f:
+        st = json.load(f)
+    s["cpu_time_s"] = st.get("cpu_time_s", {})
+    s["process_wall_s"] = wall
+    return s
+
+
+def bench_map(a):
+    rows = []
+    for mode in ("nodes", "nodelets"):
+        out = os.path.join(REPO, "results", "bench", "map_%s" % mode)
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+        args = ["mode:=" + mode, "ambient:=25", "engine:=map"]
+        if a.until:
+            args.append("until:=%g" % a.until)
+        s = run_scenario("baseline_urban", out, args)
+        if s:
+            rows.append((mode, s))
+    print("\nbaseline_urban, map engine, ambient 25 C, macro step %s s" %
+          (rows[0][1]["macro_step_s"] if rows else "?"))
+    print("| mode | sim time [s] | wall time [s] | wall/sim | steps/s | distance [km] | fuel [L/100km] | CPU per node [s] |")
+    print("|---|---|---|---|---|---|---|---|")
+    for mode, s in rows:
+        steps = s["sim_time_s"] / s["macro_step_s"]
+        print("| %s | %.1f | %.1f | %.4f | %.0f | %.3f | %.2f | %s |" % (
+            mode, s["sim_time_s"], s["wall_time_s"], s["wall_time_s"] / s["sim_time_s"],
+            steps / s["wall_time_s"], s.get("distance_km", float("nan")),
+            s.get("fuel_l_per_100km", float("nan")),
+            ", ".join("%s %.1f" % kv for kv in sorted(s["cpu_time_s"].items()))))
+    with open(os.path.join(REPO, "results", "bench", "map.json"), "w") as f:
+        json.dump(dict(rows), f, indent=2)
+    return 0 if len(rows) == 2 else 1
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("what", nargs="?", default="map", choices=["map"])
+    ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
+    a = ap.parse_args()
+    return bench_map(a)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
