@@ -11,7 +11,7 @@
 #include "common/params.hpp"
 #include "common/units.hpp"
 #include "engine_map/map_engine.hpp"
-#include "flat_yaml.hpp"
+#include "common/yaml_params.hpp"
 
 using namespace hbt;
 using namespace hbt::engine_map;
@@ -230,7 +230,7 @@ TEST(MapEngine, ConfigYamlMatchesDeclaredParameters) {
   MapEngineParams p;
   ParamSet ps;
   p.declare(ps);
-  const ParamSource src = testutil::readFlatYaml("config/engine_map.yaml");
+  const ParamSource src = readYamlParams("config/engine_map.yaml");
   EXPECT_NO_THROW(applyParams(ps, src));  // no unknown key, every value in range
   for (const auto& entry : ps.entries())
     EXPECT_TRUE(src.values.count(entry.key)) << "declared key missing from YAML: " << entry.key;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "../engine_map/flat_yaml.hpp"
+#include "common/yaml_params.hpp"
 #include "common/csv_table.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
@@ -180,7 +180,7 @@ TEST(VehicleParams, YamlMatchesDeclarationAndBadValuesRejected) {
   VehicleParams p;
   ParamSet ps;
   p.declare(ps);
-  const ParamSource src = testutil::readFlatYaml("config/vehicle.yaml");
+  const ParamSource src = readYamlParams("config/vehicle.yaml");
   EXPECT_NO_THROW(applyParams(ps, src));
   for (const auto& e : ps.entries()) EXPECT_TRUE(src.values.count(e.key)) << "missing in YAML: " << e.key;
   EXPECT_NO_THROW(p.validate("config/vehicle.yaml"));
