@@ -87,8 +87,8 @@ def summarise(out, scenario, args, status, data):
         "distance_km": dist_m / 1000.0,
         "fuel_kg": fuel_kg,
         "fuel_l_per_100km": fuel_kg / DIESEL_DENSITY_KG_L / (dist_m / 1e5) if dist_m > 0 else None,
-        "engine_positive_kwh": veh["engine_positive_work_j"][-1] / J_PER_KWH,
-        "engine_motoring_kwh": veh["engine_motoring_work_j"][-1] / J_PER_KWH,
+        "engine_positive_kwh": eng["positive_work_j"][-1] / J_PER_KWH,
+        "engine_motoring_kwh": eng["motoring_work_j"][-1] / J_PER_KWH,
         "speed_rmse_kmh": float(np.sqrt(np.mean(err ** 2))),
         "aux_kwh": veh["aux_work_j"][-1] / J_PER_KWH,
     })
@@ -175,7 +175,7 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--scenario", required=True)
     ap.add_argument("args", nargs="*", help="launch arguments name:=value")
-    a = ap.parse_args()
+    a = ap.parse_intermixed_args()
     status = json.load(open(os.path.join(a.out, "status.json")))
     bag = os.path.join(a.out, "run.bag")
     data = read_bag(bag) if os.path.exists(bag) else {}

@@ -1,5 +1,8 @@
 #include "cosim/param_loader.hpp"
 
+#include <cmath>
+#include <cstdlib>
+
 #include "common/errors.hpp"
 
 namespace hbt::cosim {
@@ -15,7 +18,16 @@ void flatten(const XmlRpc::XmlRpcValue& v, const std::string& key, ParamSource& 
     case X::TypeBoolean: out.set(key, static_cast<bool>(const_cast<X&>(v))); return;
     case X::TypeInt: out.set(key, static_cast<double>(static_cast<int>(const_cast<X&>(v)))); return;
     case X::TypeDouble: out.set(key, static_cast<double>(const_cast<X&>(v))); return;
-    case X::TypeString: out.set(key, static_cast<std::string>(const_cast<X&>(v))); return;
+    case X::TypeString: {
+      // PyYAML (rosparam) reads YAML 1.1, where 4.27e7 without an exponent sign is a string:
+      // take a string that is entirely a finite number as that number.
+      const std::string s = static_cast<std::string>(const_cast<X&>(v));
+      char* end = nullptr;
+      const double d = s.empty() ? 0.0 : std::strtod(s.c_str(), &end);
+      if (!s.empty() && *end == '\0' && std::isfinite(d)) out.set(key, d);
+      else out.set(key, s);
+      return;
+    }
     case X::TypeArray: {
       std::vector<double> vec;
       for (int i = 0; i < v.size(); ++i) {

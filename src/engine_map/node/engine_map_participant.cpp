@@ -53,6 +53,8 @@ void EngineMapParticipant::publishOutputs(const ros::Time& t) {
   s.boost_pressure_pa = o.gas.boost_pressure_Pa;
   s.turbo_speed_rad_s = 0.0;  // no turbocharger in the map model
   s.lambda = o.gas.lambda;
+  s.positive_work_j = o.positive_work_J;
+  s.motoring_work_j = o.motoring_work_J;
   state_pub_.publish(s);
 
   hybrid_bus_twin::ExhaustState x;

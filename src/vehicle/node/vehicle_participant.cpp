@@ -1,0 +1,148 @@
+#include "vehicle/node/vehicle_participant.hpp"
+
+#include <hybrid_bus_twin/EngineCommand.h>
+#include <hybrid_bus_twin/VehicleState.h>
+#include <hybrid_bus_twin/VehicleToCooling.h>
+
+#include <fstream>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "cosim/param_loader.hpp"
+#include "mission/mission_preprocessor.hpp"
+
+namespace hbt::vehicle {
+
+void VehicleParticipant::configure() {
+  VehicleParams p;
+  ParamSet ps;
+  p.declare(ps);
+  cosim::applyRosParams(pnh_, ps, configFile(), {"mission/", "mission_config_file"});
+  double payload_kg = p.chassis.payload_kg, ambient_c = 25.0;
+  nh_.param("/scenario/payload_kg", payload_kg, payload_kg);
+  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
+  if (!(payload_kg >= 0.0 && payload_kg <= 15000.0))
+    throw InputError("scenario (launch argument)", "payload", "must be in [0, 15000] kg");
+  p.chassis.payload_kg = payload_kg;
+  p.validate(configFile());
+  ambient_T_K_ = units::celsiusToK(ambient_c);
+  std::string pkg, out_dir, cycle;
+  nh_.param<std::string>("/scenario/package_dir", pkg, ".");
+  nh_.param<std::string>("/scenario/out_dir", out_dir, "");
+  model_ = std::make_unique<VehicleModel>(p, pkg);
+
+  // Mission: same road-load data as the vehicle model, so the profile fits this bus.
+  mission::MissionParams mp;
+  ParamSet mps;
+  mp.declare(mps);
+  std::string mission_file;
+  pnh_.param<std::string>("mission_config_file", mission_file, "config/mission.yaml");
+  applyParams(mps, cosim::loadParamSource(pnh_, "mission", mission_file), {"mission_config_file"});
+  if (nh_.getParam("/scenario/cycle_file", cycle)) mp.cycle_file = cycle;
+  mp.cycle_file = cosim::resolvePackagePath(nh_, mp.cycle_file);
+  mp.accel_limits_file = cosim::resolvePackagePath(nh_, mp.accel_limits_file);
+  mp.vehicle.mass_kg = p.totalMass_kg();
+  mp.vehicle.rotating_mass_kg = model_->vehicleInertiaMass_kg() - p.totalMass_kg();
+  mp.vehicle.cda_m2 = p.chassis.cda_m2;
+  mp.vehicle.rrc = model_->roadLoad().rollingCoefficient();
+  mp.profile_csv_file = out_dir.empty() ? "" : out_dir + "/profile.csv";
+  profile_ = mission::buildMissionProfile(mp);
+  if (!out_dir.empty()) writeStops(out_dir + "/stops.csv");
+  nh_.setParam("/sim/mission_duration_s", profile_.duration_s());
+
+  const auto& cyc = profile_.cycle();
+  std::vector<double> grade(cyc.grade_percent.size());
+  for (std::size_t i = 0; i < grade.size(); ++i) grade[i] = cyc.grade_percent[i] / 100.0;
+  model_->setGradeProfile(cyc.distance_m, grade);
+  const double v0 = profile_.speedAt(0.0);
+  model_->reset(v0, 0, p.driveline.idle_speed_rad_s, 0.0);
+
+  engine_ = &addInput<hybrid_bus_twin::EngineState>("/engine/state");
+  state_pub_ = addOutput<hybrid_bus_twin::VehicleState>("/vehicle/state");
+  command_pub_ = addOutput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
+  cooling_pub_ = addOutput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
+}
+
+void VehicleParticipant::writeStops(const std::string& path) const {
+  std::ofstream f(path);
+  if (!f) throw InputError(path, "(file)", "cannot write the stop list");
+  f << "distance_m,t_profile_s,stop_time_s\n";
+  const auto& s = profile_.samples();
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (!s[i].stop_flag || (i > 0 && s[i - 1].stop_flag)) continue;
+    std::size_t j = i;
+    while (j + 1 < s.size() && s[j + 1].stop_flag) ++j;
+    f << s[i].distance_m << "," << s[i].t_s << "," << (s[j].t_s - s[i].t_s) << "\n";
+  }
+}
+
+void VehicleParticipant::step(const ros::Time& t, double dt_s) {
+  const auto& e = engine_->at(t);
+  const double t_next = t.toSec() + dt_s;
+  VehicleInputs in;
+  in.target_speed_m_s = profile_.speedAt(t_next);
+  in.target_accel_m_s2 = profile_.accelAt(t_next);
+  in.engine_torque_Nm = e.brake_torque_nm;
+  in.engine_max_torque_Nm = e.torque_max_nm;
+  in.engine_min_torque_Nm = e.torque_min_nm;
+  in.ambient_T_K = ambient_T_K_;
+  model_->step(dt_s, in);
+  t_s_ = t_next;
+}
+
+void VehicleParticipant::publishOutputs(const ros::Time& t) {
+  const VehicleOutputs& o = model_->outputs();
+  const double ts = t.toSec();
+  hybrid_bus_twin::VehicleState s;
+  s.header.stamp = t;
+  s.speed_m_s = o.speed_m_s;
+  s.target_speed_m_s = profile_.speedAt(ts);
+  s.acceleration_m_s2 = o.accel_m_s2;
+  s.distance_m = o.distance_m;
+  s.grade_percent = 100.0 * o.grade;
+  s.accelerator_pedal = o.accel_pedal;
+  s.brake_pedal = o.brake_pedal;
+  s.gear = o.gear;
+  s.drive_mode = static_cast<uint8_t>(o.mode);
+  s.converter_locked = o.tc_locked;
+  s.engine_speed_rad_s = o.engine_speed_rad_s;
+  s.wheel_torque_request_nm = o.crank_torque_demand_Nm;
+  s.friction_brake_torque_nm = o.brake_force_N * model_->params().chassis.tyre_radius_m;
+  s.aux_power_w = o.aux_power_W;
+  const VehicleEnergy& en = o.energy;
+  s.engine_work_j = en.engine_J;
+  s.em_work_j = en.em_J;
+  s.aux_work_j = en.aux_J;
+  s.gearbox_drag_loss_j = en.gearbox_drag_J;
+  s.converter_loss_j = en.tc_loss_J;
+  s.gear_loss_j = en.gear_load_loss_J;
+  s.retarder_loss_j = en.retarder_J;
+  s.axle_loss_j = en.axle_loss_J;
+  s.shift_loss_j = en.shift_loss_J;
+  s.rolling_loss_j = en.rolling_J;
+  s.aero_loss_j = en.aero_J;
+  s.potential_energy_j = en.grade_J;
+  s.friction_brake_loss_j = en.brake_J;
+  s.kinetic_energy_change_j = en.kinetic_J - en.kinetic_initial_J;
+  s.wheel_work_j = en.wheel_J;
+  s.energy_residual_j = en.residual_J();
+  s.mission_finished = ts >= profile_.duration_s() - 1e-9;
+  state_pub_.publish(s);
+
+  hybrid_bus_twin::EngineCommand c;
+  c.header.stamp = t;
+  c.engine_speed_rad_s = o.engine_speed_rad_s;
+  c.torque_request_nm = o.engine_torque_request_Nm;
+  c.engine_on = true;
+  c.ambient_temperature_k = ambient_T_K_;
+  c.ambient_pressure_pa = model_->params().chassis.ambient_pressure_Pa;
+  command_pub_.publish(c);
+
+  hybrid_bus_twin::VehicleToCooling vc;
+  vc.header.stamp = t;
+  vc.vehicle_speed_m_s = o.speed_m_s;
+  vc.ambient_temperature_k = ambient_T_K_;
+  cooling_pub_.publish(vc);
+}
+
+}  // namespace hbt::vehicle

@@ -1,0 +1,44 @@
+// ROS bridge of the vehicle (bus, driver, automatic transmission, crankshaft): converts messages
+// and parameters, nothing else. Models: hbt::vehicle::VehicleModel (../vehicle_model.hpp) and the
+// mission pre-processor hbt::mission::buildMissionProfile (src/mission), run once at start-up.
+//
+// Inputs  (stamped t_k): /engine/state (EngineState: brake torque, torque limits).
+// Outputs (stamped t_k): /vehicle/state (VehicleState), /vehicle/engine_command (EngineCommand),
+//                        /vehicle/to_cooling (VehicleToCooling).
+// Parameters: private namespace = config/vehicle.yaml, private group `mission/` =
+// config/mission.yaml (its vehicle/* road-load keys are overridden by the vehicle model's mass,
+// drag area, rolling resistance and rotating mass so that the profile is planned for this bus);
+// /scenario/{ambient_temperature_c, payload_kg, cycle_file, out_dir, package_dir}.
+// Side outputs at start-up: <out_dir>/profile.csv (time-based target profile) and
+// <out_dir>/stops.csv (stop positions and times); /sim/mission_duration_s.
+#pragma once
+#include <hybrid_bus_twin/EngineState.h>
+
+#include <memory>
+
+#include "cosim/participant.hpp"
+#include "mission/mission_profile.hpp"
+#include "vehicle/vehicle_model.hpp"
+
+namespace hbt::vehicle {
+
+class VehicleParticipant : public cosim::Participant {
+ public:
+  VehicleParticipant(ros::NodeHandle nh, ros::NodeHandle pnh) : Participant(nh, pnh) {}
+
+ protected:
+  void configure() override;
+  void publishOutputs(const ros::Time& t) override;
+  void step(const ros::Time& t, double dt_s) override;
+  bool finished() const override { return t_s_ >= profile_.duration_s() - 1e-9; }
+
+ private:
+  void writeStops(const std::string& path) const;
+  std::unique_ptr<VehicleModel> model_;
+  mission::MissionProfile profile_;
+  cosim::Input<hybrid_bus_twin::EngineState>* engine_ = nullptr;
+  ros::Publisher state_pub_, command_pub_, cooling_pub_;
+  double t_s_ = 0.0, ambient_T_K_ = 298.15;
+};
+
+}  // namespace hbt::vehicle
