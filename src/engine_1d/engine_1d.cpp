@@ -1,0 +1,188 @@
+#include "engine_1d/engine_1d.hpp"
+
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/errors.hpp"
+
+namespace hbt::engine1d {
+namespace {
+constexpr double kStoppedRadS = 200.0 * M_PI / 30.0;
+
+double threadCpu() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+void check(double v, const char* name) {
+  if (!std::isfinite(v)) throw ModelDivergence("engine_1d outputs", name, "non-finite value");
+}
+}  // namespace
+
+Engine1D::Engine1D(const Engine1DParams& p, const std::string& root) : P_(p) {
+  P_.validate();
+  tc_ = std::make_unique<turbo::Turbocharger>(turbo::buildTurbocharger(P_.turbo, root));
+  ref_ = std::make_unique<engine_map::MapEngine>(P_.reference, root);
+  cyl::Cylinder probe(P_.cylinder, "probe");
+  ctl_ = std::make_unique<EngineControllers>(P_.engine, probe.thermo().afrStoich(),
+                                             P_.cylinder.fuel_ref_kg);
+  reset(1200.0 * M_PI / 30.0, 0.0);
+}
+
+Engine1D::~Engine1D() = default;
+
+void Engine1D::reset(double w, double torque, double T_amb, double p_amb, double coolant) {
+  w = std::max(w, kStoppedRadS);
+  const double tfl = ref_->fullLoadTorque(w), tmot = ref_->motoringTorque(w);
+  const double treq = EngineControllers::limitedRequest(torque, tfl, tmot);
+  const double load = std::clamp(treq / tfl, 0.0, 1.0);
+  const double rpm = w * 30.0 / M_PI;
+  EngineAssembly::Initial in;
+  in.p_amb = p_amb;
+  in.T_amb = T_amb;
+  in.coolant_K = coolant;
+  in.p_im = ctl_->boostTarget(w, load, p_amb);
+  in.T_im = T_amb + 10.0 + 25.0 * load;
+  in.p3 = in.p_im * (1.0 + 0.15 * load) + 5000.0;
+  in.T3 = 550.0 + 350.0 * load;
+  in.turbo_rad_s = P_.engine.initial_turbo_speed_rpm * M_PI / 30.0 *
+                   std::clamp(0.35 + 0.65 * load, 0.2, 1.0) * std::sqrt(std::min(rpm / 1400.0, 1.6));
+  const double cps = 6.0 * w / (4.0 * M_PI);
+  in.fuel_per_cycle_kg = treq > tmot ? ref_->steadyFuel(w, treq) / cps : 0.0;
+  asm_.reset();
+  asm_ = std::make_unique<EngineAssembly>(P_, *tc_, in);
+  ctl_->reset(0.5);
+  cmd_ = ControlCommand();
+  cmd_.fuel_per_cycle_kg = in.fuel_per_cycle_kg;
+  cmd_.wastegate_opening = 0.5;
+  asm_->setWastegateOpening(0.5);
+  out_ = Engine1DOutputs();
+  out_.brake_torque_Nm = treq;
+  out_.boost_pressure_Pa = in.p_im;
+  out_.air_mass_flow_kg_s = 0.0;
+  back_p_ = p_amb + 2000.0;
+  asm_->setBackPressure(back_p_, in.T3 - 100.0);
+  asm_->setAmbient(p_amb, T_amb);
+}
+
+const Engine1DOutputs& Engine1D::step(double dt, const Engine1DInputs& in) {
+  const double cpu0 = threadCpu();
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw ModelDivergence("engine_1d inputs", "dt", "macro step must be finite and > 0");
+  for (double v : {in.speed_rad_s, in.torque_request_Nm, in.ambient_T_K, in.ambient_p_Pa,
+                   in.back_pressure_Pa, in.coolant_T_K})
+    if (!std::isfinite(v)) throw ModelDivergence("engine_1d inputs", "input", "non-finite input");
+  if (!(in.ambient_T_K > 150.0 && in.ambient_p_Pa > 3e4))
+    throw ModelDivergence("engine_1d inputs", "ambient", "ambient state out of range");
+  const double w = in.speed_rad_s;
+  out_.max_torque_Nm = ref_->fullLoadTorque(std::max(w, 0.0));
+  out_.min_torque_Nm = ref_->motoringTorque(std::max(w, 0.0));
+  if (w < kStoppedRadS) {  // stopped / cranking: gas dynamics frozen
+    out_.brake_torque_Nm = out_.indicated_torque_Nm = out_.friction_torque_Nm = 0.0;
+    out_.fuel_mass_flow_kg_s = out_.air_mass_flow_kg_s = out_.exhaust_mass_flow_kg_s = 0.0;
+    out_.nox_mass_flow_kg_s = out_.coolant_heat_W = 0.0;
+    out_.lambda = 0.0;
+    out_.fuel_cut = true;
+    out_.sim_time_s += dt;
+    out_.cpu_time_s = threadCpu() - cpu0;
+    out_.cpu_time_total_s += out_.cpu_time_s;
+    return out_;
+  }
+  EngineAssembly& A = *asm_;
+  CycleMeans m;
+  A.cycleMeans(m);
+  // boundary conditions
+  A.setAmbient(in.ambient_p_Pa, in.ambient_T_K);
+  A.setCoolantTemperature(in.coolant_T_K);
+  const double T_exh = out_.exhaust_T_K > 0.0 ? out_.exhaust_T_K : 600.0;
+  if (in.back_pressure_Pa > 0.0) {
+    back_p_ = in.back_pressure_Pa;
+  } else {
+    const Engine1DConfig& E = P_.engine;
+    const double K = E.back_dp_ref_Pa * E.back_ref_p_Pa /
+                     (E.back_ref_flow_kg_s * E.back_ref_flow_kg_s * E.back_ref_T_K);
+    const double mdot = std::max(m[kExhOut], 0.0);
+    back_p_ = in.ambient_p_Pa + std::min(K * mdot * mdot * T_exh / std::max(back_p_, in.ambient_p_Pa),
+                                         0.5 * in.ambient_p_Pa);
+  }
+  A.setBackPressure(back_p_, T_exh);
+  // controllers
+  ControlInputs ci;
+  ci.omega = w;
+  ci.torque_request = in.torque_request_Nm;
+  ci.full_load = out_.max_torque_Nm;
+  ci.motoring = out_.min_torque_Nm;
+  ci.brake_torque = A.windowFull() ? m[kIndTorque] - m[kFricTorque] : out_.brake_torque_Nm;
+  ci.boost = A.windowFull() ? m[kBoost] : A.intakeManifoldPressure();
+  ci.ambient_p = in.ambient_p_Pa;
+  ci.air_flow = A.windowFull() ? m[kAir] : A.compressorMassFlow();
+  ci.fuel_enabled = in.fuel_enabled;
+  const double treq = EngineControllers::limitedRequest(in.torque_request_Nm, ci.full_load, ci.motoring);
+  ci.feedforward_fuel_kg_s = ref_->steadyFuel(w, treq);
+  cmd_ = ctl_->update(dt, ci);
+  A.setFuelPerCycle(cmd_.fuel_per_cycle_kg);
+  A.setWastegateOpening(cmd_.wastegate_opening);
+  // gas dynamics and cylinders
+  A.advance(dt, w);
+  computeOutputs(dt, w, in);
+  out_.cpu_time_s = threadCpu() - cpu0;
+  out_.cpu_time_total_s += out_.cpu_time_s;
+  return out_;
+}
+
+void Engine1D::computeOutputs(double dt, double w, const Engine1DInputs& in) {
+  const EngineAssembly& A = *asm_;
+  CycleMeans m;
+  A.cycleMeans(m);
+  Engine1DOutputs& o = out_;
+  o.indicated_torque_Nm = m[kIndTorque];
+  o.friction_torque_Nm = m[kFricTorque];
+  o.brake_torque_Nm = m[kIndTorque] - m[kFricTorque];
+  o.fuel_mass_flow_kg_s = m[kFuel];
+  o.fuel_mass_kg = A.totals().fuel_kg;
+  o.fuel_per_cycle_kg = cmd_.fuel_per_cycle_kg;
+  o.boost_pressure_Pa = m[kBoost];
+  o.boost_target_Pa = cmd_.boost_target_Pa;
+  o.intake_manifold_T_K = m[kImT];
+  o.turbo_speed_rad_s = A.turboSpeed();
+  o.wastegate_opening = A.wastegateOpening();
+  o.air_mass_flow_kg_s = m[kAir];
+  const cyl::GasThermo& th = A.cylinder(0).thermo();
+  o.lambda = m[kFuel] > 0.0 ? m[kAir] / (th.afrStoich() * m[kFuel]) : 0.0;
+  o.exhaust_mass_flow_kg_s = m[kExhOut];
+  const double cp_ex = P_.turbo.exhaust_gamma * P_.turbo.exhaust_gas_constant /
+                       (P_.turbo.exhaust_gamma - 1.0);
+  if (m[kExhOut] > 1e-6) o.exhaust_T_K = m[kExhEnth] / (m[kExhOut] * cp_ex);
+  const double xb = std::clamp(A.exhaustBurnedFraction(), 0.0, 1.0);
+  auto y = [&](cyl::Species s) {
+    return (1.0 - xb) * th.massFraction(cyl::kAir, s) + xb * th.massFraction(cyl::kBurned, s);
+  };
+  o.exhaust.y_O2 = y(cyl::kO2);
+  o.exhaust.y_N2 = y(cyl::kN2);
+  o.exhaust.y_CO2 = y(cyl::kCO2);
+  o.exhaust.y_H2O = y(cyl::kH2O);
+  o.exhaust.y_Ar = y(cyl::kAr);
+  o.exhaust.y_NOx = m[kExhOut] > 1e-6 ? std::min(m[kNox] / m[kExhOut], 0.1) : 0.0;
+  o.back_pressure_Pa = back_p_;
+  o.nox_mass_flow_kg_s = m[kNox];
+  o.nox_mass_kg = A.totals().nox_kg;
+  o.coolant_heat_W = m[kWallHeat] + P_.engine.friction_to_coolant * m[kFricTorque] * w;
+  o.coolant_heat_J += o.coolant_heat_W * dt;
+  o.peak_cylinder_pressure_Pa = A.peakPressureLastCycles();
+  o.turbine_inlet_p_Pa = m[kP3];
+  o.turbine_inlet_T_K = m[kT3];
+  o.fuel_cut = cmd_.fuel_cut;
+  o.smoke_limited = cmd_.smoke_limited;
+  o.sim_time_s += dt;
+  o.gas_steps = A.steps();
+  (void)in;
+  for (double v : {o.brake_torque_Nm, o.fuel_mass_flow_kg_s, o.boost_pressure_Pa, o.turbo_speed_rad_s,
+                   o.lambda, o.air_mass_flow_kg_s, o.exhaust_mass_flow_kg_s, o.exhaust_T_K,
+                   o.nox_mass_flow_kg_s, o.coolant_heat_W, o.turbine_inlet_p_Pa, o.turbine_inlet_T_K})
+    check(v, "output");
+}
+
+}  // namespace hbt::engine1d

@@ -1,0 +1,103 @@
+// Parameters of the 1D engine assembly (keys "engine_1d/...", config/engine_1d.yaml) and the
+// bundle of every model's parameters the assembly needs (cylinder, turbocharger, reference map).
+//
+// Geometry conventions (SI): pipes by length L [m], diameter D [m] and cell count n (FSM mesh;
+// the TVD reference runs n x tvd_mesh_factor cells); volumes [m^3]; valve lift [m] over crank
+// angle from the valve events of the cylinder model (cylinder/valve_events/*):
+//   L(phi) = L_max sin(pi phi / Delta)^k,  phi = theta - theta_open in [0, Delta]  (0 outside),
+//   A_eff  = n_v Cd(L/d) pi d L  (curtain area; Cd tables over L/d include the port restriction)
+// Quasi-steady pressure losses (air filter, default back-pressure), K from a reference point:
+//   dp = K mdot^2 T/p,   K = dp_ref p_ref/(mdot_ref^2 T_ref)            [Pa]
+#pragma once
+#include <string>
+#include <vector>
+
+#include "common/params.hpp"
+#include "cylinder/cylinder_params.hpp"
+#include "engine_map/map_engine.hpp"
+#include "turbo/turbo_config.hpp"
+
+namespace hbt::engine1d {
+
+struct PipeSpec {
+  double length_m = 0.3;
+  double diameter_m = 0.05;
+  int cells = 2;
+};
+
+struct ValveSpec {
+  double diameter_m = 0.036;   // inner seat diameter d [m]
+  int count = 2;               // valves per cylinder n_v
+  double max_lift_m = 0.0125;  // L_max [m]
+  double shape_exponent = 1.5; // k of the lift law [-]
+  std::vector<double> ld{0.0, 0.1, 0.2, 0.3, 0.4};          // L/d breakpoints [-]
+  std::vector<double> cd_normal{0.70, 0.66, 0.58, 0.48, 0.40};   // normal flow direction
+  std::vector<double> cd_back{0.65, 0.60, 0.52, 0.44, 0.37};     // back flow
+};
+
+struct Engine1DConfig {
+  std::string solver = "fsm";        // fsm | tvd
+  double tvd_mesh_factor = 2.0;      // TVD: cells x factor (fine-mesh reference)
+  std::vector<double> firing_order{1, 5, 3, 6, 2, 4};
+  // Air path
+  double air_filter_dp_ref_Pa = 3000.0, air_filter_ref_flow_kg_s = 0.30;
+  PipeSpec compressor_outlet{0.6, 0.065, 4};
+  PipeSpec charge_air_duct{2.0, 0.075, 10};  // CAC core + return duct (cold side)
+  double intake_plenum_m3 = 4.0e-3;
+  PipeSpec intake_runner{0.20, 0.045, 2};
+  double intake_friction_darcy = 0.02;
+  // Exhaust path
+  PipeSpec exhaust_runner{0.20, 0.040, 1};
+  double exhaust_junction_m3 = 0.6e-3;   // per bank (log manifold collector)
+  PipeSpec turbine_inlet{0.20, 0.045, 1};
+  double turbine_outlet_m3 = 1.5e-3;
+  PipeSpec downpipe{0.8, 0.100, 4};
+  double exhaust_friction_darcy = 0.025;
+  double exhaust_wall_T_K = 650.0;       // Reynolds-analogy wall heat in exhaust pipes
+  // Default back pressure (when the input is <= 0)
+  double back_dp_ref_Pa = 15000.0, back_ref_flow_kg_s = 0.30, back_ref_T_K = 600.0,
+         back_ref_p_Pa = 116000.0;
+  ValveSpec intake_valve, exhaust_valve;
+  // Controllers
+  double fuel_kp = 2.0e-8, fuel_ki = 1.5e-7;     // kg per cylinder-cycle per Nm (and per Nm s)
+  double fuel_trim_max = 0.5;                    // |trim| <= fraction of the feed-forward + ...
+  double lambda_smoke = 1.25;                    // smoke limiter: lambda >= this
+  double wg_kp = 3.0e-5, wg_ki = 6.0e-5;         // opening per Pa (and per Pa s)
+  std::vector<double> boost_speed_rpm{600, 1000, 1400, 1800, 2300};
+  std::vector<double> boost_load{0.0, 0.5, 1.0};
+  std::vector<double> boost_pressure_ratio{1.05, 1.3, 1.6,   1.1, 1.7, 2.2,  1.2, 2.0, 2.5,
+                                           1.25, 2.1, 2.55,  1.3, 2.1, 2.5};
+  double controller_period_s = 0.0;      // 0: controllers act every macro step
+  // Numerics
+  double coupling_max_deg = 2.0;         // largest crank-angle step of the coupled step
+  double cylinder_substep_deg = 0.0;     // > 0 overrides cylinder/numerics/max_substep_deg
+  double friction_to_coolant = 0.5;      // share of friction power rejected to the coolant
+  double initial_turbo_speed_rpm = 40000.0;
+  // Files of the other models (relative to the repository root)
+  std::string cylinder_file = "config/engine_1d_cylinder.yaml";
+  std::string turbo_file = "config/engine_1d_turbo.yaml";
+  std::string reference_file = "config/engine_map.yaml";
+
+  void declare(ParamSet& ps);  // keys "engine_1d/..."
+};
+
+/// Everything the Engine1D model needs.
+struct Engine1DParams {
+  Engine1DConfig engine;
+  cyl::CylinderParams cylinder;
+  turbo::TurboConfig turbo;
+  engine_map::MapEngineParams reference;
+  std::string engine_source = "(parameters)";
+
+  /// Reads config/engine_1d.yaml (path relative to repo_root unless absolute) and the files it
+  /// names; each file is applied with its own ParamSet, so errors name the file and the key.
+  static Engine1DParams load(const std::string& repo_root,
+                             const std::string& engine_file = "config/engine_1d.yaml");
+  /// Checks cross-field consistency (throws InputError naming engine_source and the key).
+  void validate() const;
+};
+
+/// Resolves `file` against `root` unless it is absolute.
+std::string resolvePath(const std::string& root, const std::string& file);
+
+}  // namespace hbt::engine1d

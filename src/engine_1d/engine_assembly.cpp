@@ -1,0 +1,304 @@
+#include "engine_1d/engine_assembly.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/errors.hpp"
+
+namespace hbt::engine1d {
+namespace {
+using gasdyn::End;
+constexpr double kDeg = M_PI / 180.0;
+
+std::string num(int k) { return std::to_string(k + 1); }
+
+void requireFinite(double v, const std::string& where, const char* what) {
+  if (!std::isfinite(v)) throw ModelDivergence(where, what, "non-finite value");
+}
+}  // namespace
+
+EngineAssembly::EngineAssembly(const Engine1DParams& p, const turbo::Turbocharger& tc,
+                               const Initial& init)
+    : P_(p),
+      tc_(tc),
+      shaft_(tc.shaft),
+      intake_(gasdyn::PerfectGas{p.turbo.compressor_options.gamma, p.turbo.air_gas_constant}),
+      exhaust_(gasdyn::PerfectGas{p.turbo.exhaust_gamma, p.turbo.exhaust_gas_constant}) {
+  cp_in_ = intake_.gas().cp();
+  cp_ex_ = exhaust_.gas().cp();
+  build(init);
+}
+
+gasdyn::Pipe& EngineAssembly::pipe(gasdyn::Network& n, const std::string& name,
+                                   const PipeSpec& s, double friction, bool hot) {
+  gasdyn::PipeConfig c;
+  c.name = name;
+  c.length = s.length_m;
+  const bool tvd = P_.engine.solver == "tvd";
+  c.cells = tvd ? std::max(1, static_cast<int>(std::lround(s.cells * P_.engine.tvd_mesh_factor)))
+                : s.cells;
+  c.diameter_left = c.diameter_right = s.diameter_m;
+  c.friction_darcy = friction;
+  c.solver = tvd ? gasdyn::SolverKind::TVD : gasdyn::SolverKind::FSM;
+  if (hot) {
+    c.heat = gasdyn::WallHeat::ReynoldsAnalogy;
+    c.T_wall = P_.engine.exhaust_wall_T_K;
+  }
+  return n.addPipe(c);
+}
+
+void EngineAssembly::build(const Initial& in) {
+  const Engine1DConfig& E = P_.engine;
+  cyl::CylinderParams cp = P_.cylinder;
+  if (E.cylinder_substep_deg > 0.0) cp.max_substep_deg = E.cylinder_substep_deg;
+  for (int j = 0; j < 6; ++j) {
+    const int c = static_cast<int>(E.firing_order[j]) - 1;
+    phase_deg_[c] = 120.0 * j;
+  }
+  for (int k = 0; k < 6; ++k) {
+    cyl_[k] = std::make_unique<cyl::Cylinder>(cp, "cyl" + num(k));
+    cyl_[k]->setCoolantTemperature(in.coolant_K);
+    cyl_[k]->setFuelPerCycle(in.fuel_per_cycle_kg);
+    // cylinder k is at local angle -phase when the engine crank (cylinder 1 firing TDC) is 0
+    const double th = cyl::wrapCycleDeg(-phase_deg_[k]);
+    const bool exhaust_side = th > cp.evo_deg || th < cp.evc_deg - 720.0;
+    cyl_[k]->initialize(th, exhaust_side ? in.p3 : in.p_im, exhaust_side ? in.T3 : in.T_im + 30.0,
+                        0.05);
+  }
+  comp_map_ = std::make_shared<CompressorFlowMap>(tc_.compressor);
+  turb_map_[0] = std::make_shared<TurbineFlowMap>(tc_.turbine.entry(0), &tc_.turbine.wastegate());
+  turb_map_[1] = std::make_shared<TurbineFlowMap>(tc_.turbine.entry(1), nullptr);
+  shaft_.setOmega(in.turbo_rad_s);
+  T_amb_ = in.T_amb;
+
+  // --- intake network ---
+  filter_ = &intake_.addReservoir("air_filter_box", in.p_amb, in.T_amb);
+  plenum_ = &intake_.addVolume("intake_plenum", E.intake_plenum_m3, in.p_im, in.T_im);
+  comp_pipe_ = &pipe(intake_, "compressor_outlet", E.compressor_outlet, E.intake_friction_darcy, false);
+  cac_pipe_ = &pipe(intake_, "charge_air_duct", E.charge_air_duct, E.intake_friction_darcy, false);
+  comp_ = &intake_.add<gasdyn::CompressorOutlet>("compressor", *filter_, gasdyn::leftEnd(*comp_pipe_),
+                                                 comp_map_);
+  cac_ = &intake_.add<ChargeAirCoolerLink>("intercooler", gasdyn::rightEnd(*comp_pipe_),
+                                           gasdyn::leftEnd(*cac_pipe_), tc_.intercooler);
+  cac_->setCoolingAirTemperature(in.T_amb);
+  intake_.connect(*cac_pipe_, End::Right, *plenum_);
+  for (int k = 0; k < 6; ++k) {
+    run_in_[k] = &pipe(intake_, "intake_runner_" + num(k), E.intake_runner, E.intake_friction_darcy, false);
+    intake_.connect(*run_in_[k], End::Left, *plenum_);
+    res_in_[k] = &intake_.addReservoir("cyl" + num(k) + "_intake_side", in.p_im, in.T_im);
+    auto area = std::make_shared<CrankValveArea>(*cyl_[k], E.intake_valve, cp.ivo_deg, cp.ivc_deg, false);
+    intake_.add<gasdyn::Valve>("intake_valves_" + num(k), *res_in_[k], gasdyn::rightEnd(*run_in_[k]), area);
+  }
+  // --- exhaust network ---
+  turb_out_ = &exhaust_.addVolume("turbine_outlet", E.turbine_outlet_m3, in.p_amb * 1.1, in.T3 - 100.0);
+  back_ = &exhaust_.addReservoir("aftertreatment_inlet", in.p_amb * 1.05, in.T3 - 100.0);
+  for (int b = 0; b < 2; ++b) {
+    junction_[b] = &exhaust_.addVolume("exhaust_collector_" + num(b), E.exhaust_junction_m3, in.p3, in.T3);
+    turb_pipe_[b] = &pipe(exhaust_, "turbine_inlet_" + num(b), E.turbine_inlet, E.exhaust_friction_darcy, true);
+    exhaust_.connect(*turb_pipe_[b], End::Left, *junction_[b]);
+    turb_[b] = &exhaust_.add<gasdyn::TurbineEntry>("turbine_entry_" + num(b), gasdyn::rightEnd(*turb_pipe_[b]),
+                                                  *turb_out_, turb_map_[b]);
+  }
+  for (int k = 0; k < 6; ++k) {
+    run_ex_[k] = &pipe(exhaust_, "exhaust_runner_" + num(k), E.exhaust_runner, E.exhaust_friction_darcy, true);
+    res_ex_[k] = &exhaust_.addReservoir("cyl" + num(k) + "_exhaust_side", in.p3, in.T3);
+    auto area = std::make_shared<CrankValveArea>(*cyl_[k], E.exhaust_valve, cp.evo_deg, cp.evc_deg, true);
+    exhaust_.add<gasdyn::Valve>("exhaust_valves_" + num(k), *res_ex_[k], gasdyn::leftEnd(*run_ex_[k]), area);
+    exhaust_.connect(*run_ex_[k], End::Right, *junction_[k < 3 ? 0 : 1]);
+  }
+  down_pipe_ = &pipe(exhaust_, "downpipe", E.downpipe, E.exhaust_friction_darcy, true);
+  exhaust_.connect(*down_pipe_, End::Left, *turb_out_);
+  back_end_ = &exhaust_.connect(*down_pipe_, End::Right, *back_);
+
+  for (auto& p : intake_.pipes()) p->setUniform(p.get() == comp_pipe_ ? in.p_im * 1.05 : in.p_im,
+                                                p.get() == comp_pipe_ ? in.T_im + 60.0 : in.T_im);
+  for (auto& p : exhaust_.pipes())
+    p->setUniform(p.get() == down_pipe_ ? in.p_amb * 1.08 : in.p3,
+                  p.get() == down_pipe_ ? in.T3 - 100.0 : in.T3);
+  for (int k = 0; k < 6; ++k) {
+    prev_cycles_[k] = 0;
+    prev_work_[k] = prev_wall_[k] = prev_inj_[k] = 0.0;
+  }
+  window_.reset();
+}
+
+void EngineAssembly::setFuelPerCycle(double m) {
+  for (auto& c : cyl_) c->setFuelPerCycle(m);
+}
+void EngineAssembly::setCoolantTemperature(double T) {
+  for (auto& c : cyl_) c->setCoolantTemperature(T);
+}
+void EngineAssembly::setCombustion(bool on) {
+  for (auto& c : cyl_) c->setCombustion(on);
+}
+void EngineAssembly::setAmbient(double p_amb, double T_amb) {
+  // Air filter: dp = K mdot^2 T/p, K from (dp_ref, mdot_ref) at 298.15 K, 100 kPa; flow = cycle mean.
+  const Engine1DConfig& E = P_.engine;
+  const double K = E.air_filter_dp_ref_Pa * 1e5 /
+                   (E.air_filter_ref_flow_kg_s * E.air_filter_ref_flow_kg_s * 298.15);
+  CycleMeans m;
+  cycleMeans(m);
+  const double mdot = windowFull() ? m[kAir] : comp_->massFlow();
+  const double dp = std::min(K * mdot * mdot * T_amb / p_amb, 0.3 * p_amb);
+  filter_->setReservoirState(p_amb - dp, T_amb);
+  cac_->setCoolingAirTemperature(T_amb);
+  T_amb_ = T_amb;
+}
+void EngineAssembly::setBackPressure(double p, double T) { back_->setReservoirState(p, T); }
+void EngineAssembly::setWastegateOpening(double a) { turb_map_[0]->setWastegateOpening(a); }
+
+double EngineAssembly::compressorMassFlow() const { return comp_->massFlow(); }
+
+double EngineAssembly::peakPressureLastCycles() const {
+  double p = 0.0;
+  for (const auto& c : cyl_) p = std::max(p, c->lastCycle().pmax_Pa);
+  return p;
+}
+
+double EngineAssembly::exhaustBurnedFraction() const {
+  CycleMeans m;
+  cycleMeans(m);
+  return m[kCylOut] > 0.0 ? m[kBurnedOut] / m[kCylOut] : 0.0;
+}
+
+void EngineAssembly::advance(double interval, double omega) {
+  if (!(interval > 0.0)) return;
+  if (!(omega > 0.0) || !std::isfinite(omega))
+    throw ModelDivergence("engine_1d", "crank speed", "must be finite and > 0");
+  fric_torque_ = 0.0;
+  for (const auto& c : cyl_) fric_torque_ += c->frictionTorque_Nm(omega);
+  const double dt_ang = P_.engine.coupling_max_deg * kDeg / omega;
+  double remaining = interval;
+  while (remaining > 0.0) {
+    const double dtmax = std::min({intake_.stableDt(), exhaust_.stableDt(), dt_ang});
+    if (!(dtmax > 1e-9)) {
+      std::string a, b;
+      const double di = intake_.stableDt(&a), de = exhaust_.stableDt(&b);
+      throw ModelDivergence(di < de ? a : b, "time step",
+                            "stable step " + std::to_string(std::min(di, de)) + " s collapsed");
+    }
+    const double n = std::max(1.0, std::ceil(remaining / dtmax * (1.0 - 1e-12)));
+    const double dt = n <= 1.0 ? remaining : remaining / n;
+    coupledStep(dt, omega);
+    remaining = n <= 1.0 ? 0.0 : remaining - dt;
+  }
+  CycleMeans m;
+  cycleMeans(m);
+  for (int b = 0; b < 2; ++b) {
+    const double out = m[kBankOut0 + b];
+    if (out > 0.0) xb_bank_[b] = m[kBankBurned0 + b] / out;
+  }
+}
+
+void EngineAssembly::coupledStep(double dt, double omega) {
+  for (int k = 0; k < 6; ++k) {
+    const double p = cyl_[k]->pressure_Pa(), T = cyl_[k]->temperature_K();
+    res_in_[k]->setReservoirState(p, T);
+    res_ex_[k]->setReservoirState(p, T);
+  }
+  const double wtc = shaft_.omega();
+  comp_->setSpeed(wtc);
+  turb_[0]->setSpeed(wtc);
+  turb_[1]->setSpeed(wtc);
+  intake_.advance(dt);
+  exhaust_.advance(dt);
+
+  std::array<double, kNumChannels> x{};
+  double work = 0.0, wall = 0.0, fuel = 0.0, nox = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    cyl::Cylinder& c = *cyl_[k];
+    cyl::PortFlows pf;
+    const gasdyn::EndFlux& fi = run_in_[k]->endFlux(End::Right);
+    const double mi = -fi.mdot_in;
+    if (mi > 0.0) {
+      const double T0 = -fi.energy_in / (mi * cp_in_), dm = mi * dt;
+      double xb = 0.0;
+      if (back_m_[k] > 0.0) {
+        const double take = std::min(back_m_[k], dm);
+        xb = back_xb_[k] * take / dm;
+        back_m_[k] -= take;
+      }
+      pf.intake = {mi, mi * c.enthalpyOf(T0, xb), xb};
+    } else if (mi < 0.0) {
+      const double dm = -mi * dt, xbc = c.burnedFraction();
+      back_xb_[k] = (back_m_[k] * back_xb_[k] + dm * xbc) / (back_m_[k] + dm);
+      back_m_[k] += dm;
+      pf.intake = {mi, mi * c.specificEnthalpy_J_kg(), 0.0};
+    }
+    const gasdyn::EndFlux& fe = run_ex_[k]->endFlux(End::Left);
+    const double me = -fe.mdot_in;
+    const int bank = k < 3 ? 0 : 1;
+    if (me > 0.0) {
+      const double T0 = -fe.energy_in / (me * cp_ex_), xb = xb_bank_[bank];
+      pf.exhaust = {me, me * c.enthalpyOf(T0, xb), xb};
+    } else if (me < 0.0) {
+      const double xbc = c.burnedFraction();
+      pf.exhaust = {me, me * c.specificEnthalpy_J_kg(), 0.0};
+      x[kCylOut] -= me;
+      x[kBurnedOut] -= me * xbc;
+      x[kBankOut0 + bank] -= me;
+      x[kBankBurned0 + bank] -= me * xbc;
+    }
+    totals_.intake_enthalpy_J += pf.intake.Hdot_W * dt;
+    totals_.exhaust_enthalpy_J -= pf.exhaust.Hdot_W * dt;
+    c.advance(dt, omega, pf);
+
+    const int cycles = c.cyclesCompleted();
+    double dW, dQ;
+    if (cycles != prev_cycles_[k]) {
+      const cyl::CycleResults& r = c.lastCycle();
+      dW = r.work_net_J - prev_work_[k] + c.workThisCycle_J();
+      dQ = r.heat_wall_J - prev_wall_[k] + c.wallHeatThisCycle_J();
+      nox += r.nox_no2eq_kg;
+      prev_cycles_[k] = cycles;
+    } else {
+      dW = c.workThisCycle_J() - prev_work_[k];
+      dQ = c.wallHeatThisCycle_J() - prev_wall_[k];
+    }
+    prev_work_[k] = c.workThisCycle_J();
+    prev_wall_[k] = c.wallHeatThisCycle_J();
+    double inj = 0.0;
+    for (int i = 0; i < 3; ++i) inj += c.pulseInjected_kg(i);
+    if (inj < prev_inj_[k]) prev_inj_[k] = 0.0;
+    fuel += inj - prev_inj_[k];
+    prev_inj_[k] = inj;
+    work += dW;
+    wall += dQ;
+  }
+  // turbocharger shaft
+  const double Pt = turb_[0]->power() + turb_[1]->power(), Pc = comp_->power();
+  requireFinite(Pt, "turbine", "power");
+  requireFinite(Pc, "compressor", "power");
+  shaft_.step(dt, Pt, Pc);
+  if (!std::isfinite(shaft_.omega()) || shaft_.omega() > 5e4)
+    throw ModelDivergence("turbocharger shaft", "speed",
+                          "omega = " + std::to_string(shaft_.omega()) + " rad/s");
+
+  const double lhv = P_.cylinder.fuel.lhv_J_kg;
+  totals_.fuel_kg += fuel;
+  totals_.fuel_energy_J += fuel * lhv;
+  totals_.indicated_work_J += work;
+  totals_.friction_work_J += fric_torque_ * omega * dt;
+  totals_.wall_heat_J += wall;
+  totals_.nox_kg += nox;
+
+  x[kIndTorque] = work / (omega * dt);
+  x[kFricTorque] = fric_torque_;
+  x[kAir] = comp_->massFlow();
+  x[kExhOut] = -back_end_->massFlowIn();
+  x[kExhEnth] = -down_pipe_->endFlux(End::Right).energy_in;
+  x[kBoost] = plenum_->p();
+  x[kImT] = plenum_->T();
+  const int n0 = turb_pipe_[0]->cells() - 1, n1 = turb_pipe_[1]->cells() - 1;
+  x[kP3] = 0.5 * (turb_pipe_[0]->p(n0) + turb_pipe_[1]->p(n1));
+  x[kT3] = 0.5 * (turb_pipe_[0]->T(n0) + turb_pipe_[1]->T(n1));
+  window_.add(dt, omega * dt / kDeg, x);
+  window_.addImpulse(kFuel, fuel);
+  window_.addImpulse(kWallHeat, wall);
+  window_.addImpulse(kNox, nox);
+  t_ += dt;
+  ++steps_;
+}
+
+}  // namespace hbt::engine1d

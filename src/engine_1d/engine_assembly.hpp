@@ -1,0 +1,146 @@
+// Gas-dynamic assembly of the 6-cylinder engine (SPEC §3), crank-angle resolved.
+//
+// Layout (two gasdyn networks, intake air gamma 1.4, exhaust gamma 1.33; they exchange gas only
+// through the cylinders):
+//   air-filter box (reservoir: p_1 = p_amb - K_af mdot^2 T/p, T_amb)
+//     -> CompressorOutlet (turbo compressor map) -> compressor-outlet pipe (hot)
+//     -> ChargeAirCoolerLink (air-to-air, eps(mdot), cooling air at T_amb, dp = K mdot^2 T/p)
+//     -> charge-air duct pipe -> intake plenum (Volume) -> 6 runners -> Valve (2 intake valves)
+//     -> cylinder k (0D, src/cylinder; seen by the valves as a reservoir at its p, T)
+//     -> Valve (2 exhaust valves) -> exhaust runner k -> bank collector (Volume; cyl 1-3, 4-6)
+//     -> turbine-inlet pipe -> TurbineEntry 0 (with wastegate) / 1 -> turbine-outlet Volume
+//     -> downpipe -> back-pressure reservoir (input, or p_amb + K_b mdot^2 T/p).
+// Turbo shaft: J w dw/dt = eta_m P_t - P_c - k_f w^2 (turbo::TurboShaft), P_t and P_c the
+// boundaries' powers, stepped with the network step.
+//
+// Coupled step of length dt (explicit, first order in the coupling; the cylinder state is
+// frozen during one network step):
+//   dt = min(CFL step of both networks, coupling_max_deg/omega)
+//   1. every cylinder's p, T -> its two valve reservoirs; turbo speed -> turbomachine boundaries
+//   2. both networks advance one step (valve fluxes from the pipe end states at t)
+//   3. each cylinder advances by dt with the port flows it received: mdot_k = -pipe end flux,
+//      inflow enthalpy mdot h_cyl(T0, x_b) with T0 = E/(mdot cp_pipe) from the face energy flux,
+//      outflow mdot h_cyl (cylinder mixture); x_b of back flows: intake runners keep the mass
+//      pushed back at IVO (buffer), exhaust back flow takes the bank's mean burned fraction
+//   4. shaft step, one-cycle window accumulation (cycle_window.hpp)
+// Mass is exchanged exactly; the enthalpy basis differs between the pipes (cp T, constant cp)
+// and the cylinder (NASA polynomials, zero at 298.15 K): the port energy balance is therefore
+// done in the cylinder's thermodynamics (EnergyTotals).
+// Indicated torque from the exact work increments of the cylinders (trapezoidal p dV):
+//   T_ind = sum_k dW_k/(omega dt);  friction T_f = sum_k FMEP_k V_d/(4 pi) (Chen-Flynn).
+#pragma once
+#include <array>
+#include <memory>
+#include <string>
+
+#include "cylinder/cylinder.hpp"
+#include "engine_1d/cycle_window.hpp"
+#include "engine_1d/engine_1d_params.hpp"
+#include "engine_1d/gas_exchange.hpp"
+#include "engine_1d/turbo_adapters.hpp"
+#include "gasdyn/network.hpp"
+#include "turbo/turbo_config.hpp"
+
+namespace hbt::engine1d {
+
+/// Channels of the one-cycle window (rates; means over the last 720 deg).
+enum Channel {
+  kIndTorque, kFricTorque, kFuel, kAir, kExhOut, kExhEnth, kBoost, kImT, kP3, kT3, kWallHeat,
+  kNox, kBurnedOut, kCylOut, kBankOut0, kBankOut1, kBankBurned0, kBankBurned1, kNumChannels
+};
+
+struct CycleMeans {
+  std::array<double, kNumChannels> v{};
+  double operator[](int c) const { return v[c]; }
+};
+
+/// Cumulative energy bookkeeping at the cylinder ports (cylinder thermodynamics) [J], [kg].
+struct EnergyTotals {
+  double fuel_kg = 0, fuel_energy_J = 0;  // injected, LHV
+  double indicated_work_J = 0, friction_work_J = 0, wall_heat_J = 0;
+  double intake_enthalpy_J = 0, exhaust_enthalpy_J = 0;  // net into the cylinders / out of them
+  double nox_kg = 0;
+};
+
+class EngineAssembly {
+ public:
+  /// Uniform initial state: boost p_im [Pa], T_im [K], exhaust p3 [Pa], T3 [K], turbo speed
+  /// [rad/s], ambient p [Pa], T [K]; cylinder k at its phase of the firing order.
+  struct Initial {
+    double p_im = 1.2e5, T_im = 310.0, p3 = 1.3e5, T3 = 700.0, turbo_rad_s = 4000.0;
+    double p_amb = 101325.0, T_amb = 298.15, fuel_per_cycle_kg = 0.0, coolant_K = 363.15;
+  };
+  EngineAssembly(const Engine1DParams& p, const turbo::Turbocharger& tc, const Initial& init);
+  EngineAssembly(const EngineAssembly&) = delete;
+  EngineAssembly& operator=(const EngineAssembly&) = delete;
+
+  /// Advances by `interval` [s] at crank speed omega [rad/s] (many coupled steps).
+  void advance(double interval, double omega);
+
+  // --- inputs between steps ---
+  void setFuelPerCycle(double m_kg);
+  void setCoolantTemperature(double T_K);
+  void setAmbient(double p_Pa, double T_K);     // air-filter box and intercooler cooling air
+  void setBackPressure(double p_Pa, double T_K);
+  void setWastegateOpening(double a);
+  void setCombustion(bool on);
+
+  // --- state / outputs ---
+  void cycleMeans(CycleMeans& m) const { window_.mean(m.v); }
+  bool windowFull() const { return window_.fullCycle(); }
+  const EnergyTotals& totals() const { return totals_; }
+  double frictionTorque() const { return fric_torque_; }  // [Nm] at the last speed
+  double turboSpeed() const { return shaft_.omega(); }     // [rad/s]
+  double compressorMassFlow() const;                       // instantaneous [kg/s]
+  double intakeManifoldPressure() const { return plenum_->p(); }
+  double peakPressureLastCycles() const;                   // max of the cylinders' last pmax
+  double intercoolerHeat() const { return cac_->heatRemoved(); }
+  double wastegateOpening() const { return turb_map_[0]->wastegateOpening(); }
+  double airFilterPressure() const { return filter_->p(); }
+  long steps() const { return steps_; }
+  double time() const { return t_; }
+  const cyl::Cylinder& cylinder(int i) const { return *cyl_[i]; }
+  cyl::Cylinder& cylinder(int i) { return *cyl_[i]; }
+  gasdyn::Network& intakeNetwork() { return intake_; }
+  gasdyn::Network& exhaustNetwork() { return exhaust_; }
+  const Engine1DParams& params() const { return P_; }
+  /// Mass-weighted burned fraction of the gas leaving the cylinders over the last cycle.
+  double exhaustBurnedFraction() const;
+
+ private:
+  void build(const Initial& init);
+  void coupledStep(double dt, double omega);
+  gasdyn::Pipe& pipe(gasdyn::Network& n, const std::string& name, const PipeSpec& s,
+                     double friction, bool hot);
+
+  Engine1DParams P_;
+  const turbo::Turbocharger& tc_;
+  turbo::TurboShaft shaft_;
+  gasdyn::Network intake_, exhaust_;
+  std::array<std::unique_ptr<cyl::Cylinder>, 6> cyl_;
+  std::array<double, 6> phase_deg_{};  // firing angle of each cylinder (engine crank)
+  // elements (owned by the networks)
+  gasdyn::Volume *filter_ = nullptr, *plenum_ = nullptr, *turb_out_ = nullptr, *back_ = nullptr;
+  std::array<gasdyn::Volume*, 2> junction_{};
+  std::array<gasdyn::Volume*, 6> res_in_{}, res_ex_{};
+  gasdyn::Pipe *comp_pipe_ = nullptr, *cac_pipe_ = nullptr, *down_pipe_ = nullptr;
+  std::array<gasdyn::Pipe*, 6> run_in_{}, run_ex_{};
+  std::array<gasdyn::Pipe*, 2> turb_pipe_{};
+  gasdyn::CompressorOutlet* comp_ = nullptr;
+  std::array<gasdyn::TurbineEntry*, 2> turb_{};
+  gasdyn::OpenEnd* back_end_ = nullptr;
+  ChargeAirCoolerLink* cac_ = nullptr;
+  std::shared_ptr<CompressorFlowMap> comp_map_;
+  std::array<std::shared_ptr<TurbineFlowMap>, 2> turb_map_;
+  // per-cylinder bookkeeping
+  std::array<double, 6> back_m_{}, back_xb_{};     // intake back-flow buffer [kg], [-]
+  std::array<double, 6> prev_work_{}, prev_wall_{}, prev_inj_{};
+  std::array<int, 6> prev_cycles_{};
+  CycleWindow<kNumChannels> window_;
+  EnergyTotals totals_;
+  double fric_torque_ = 0.0, t_ = 0.0, T_amb_ = 298.15, cp_in_ = 1004.5, cp_ex_ = 1160.0;
+  double xb_bank_[2] = {0.3, 0.3};
+  long steps_ = 0;
+};
+
+}  // namespace hbt::engine1d

@@ -1,0 +1,102 @@
+#include "engine_1d/gas_exchange.hpp"
+
+#include <cmath>
+
+#include "common/table1d.hpp"
+#include "gasdyn/characteristics.hpp"
+
+namespace hbt::engine1d {
+namespace {
+constexpr double kStep = 0.25;  // deg
+constexpr int kN = static_cast<int>(720.0 / kStep) + 1;
+}  // namespace
+
+CrankValveArea::CrankValveArea(const cyl::Cylinder& c, const ValveSpec& v, double open_deg,
+                               double close_deg, bool normal_is_forward)
+    : cyl_(c), v_(v), open_(open_deg) {
+  duration_ = std::fmod(close_deg - open_deg + 1440.0, 720.0);
+  const Table1D cd_n(v.ld, v.cd_normal, "valve", "cd_normal");
+  const Table1D cd_b(v.ld, v.cd_back, "valve", "cd_back");
+  fwd_.resize(kN);
+  rev_.resize(kN);
+  for (int i = 0; i < kN; ++i) {
+    const double th = -360.0 + i * kStep, L = lift(th);
+    const double curtain = v.count * M_PI * v.diameter_m * L;
+    const double an = curtain * cd_n(L / v.diameter_m), ab = curtain * cd_b(L / v.diameter_m);
+    fwd_[i] = normal_is_forward ? an : ab;
+    rev_[i] = normal_is_forward ? ab : an;
+  }
+}
+
+double CrankValveArea::lift(double th) const {
+  const double phi = std::fmod(th - open_ + 1440.0, 720.0);
+  if (phi >= duration_) return 0.0;
+  const double s = std::sin(M_PI * phi / duration_);
+  return v_.max_lift_m * std::pow(s > 0.0 ? s : 0.0, v_.shape_exponent);
+}
+
+double CrankValveArea::areaAt(double th, bool forward) const {
+  double x = (th + 360.0) / kStep;
+  if (x < 0.0) x = 0.0;
+  int i = static_cast<int>(x);
+  if (i > kN - 2) i = kN - 2;
+  const double f = x - i;
+  const std::vector<double>& a = forward ? fwd_ : rev_;
+  return (1.0 - f) * a[i] + f * a[i + 1];
+}
+
+double CrankValveArea::effectiveArea(gasdyn::FlowDirection dir, double) const {
+  return areaAt(cyl_.crankAngle_deg(), dir == gasdyn::FlowDirection::Forward);
+}
+
+ChargeAirCoolerLink::ChargeAirCoolerLink(std::string name, gasdyn::PipeEnd hot,
+                                         gasdyn::PipeEnd cold, const turbo::Intercooler& cooler)
+    : Boundary(std::move(name)), ic_(cooler) {
+  a_ = claim(hot);
+  b_ = claim(cold);
+}
+
+void ChargeAirCoolerLink::computeFluxes(double) {
+  using namespace gasdyn;
+  const PerfectGas& g = a_.pipe->gas();
+  const EndState sa = a_.state(), sb = b_.state();
+  const double pa = closedFacePressure(g, sa), pb = closedFacePressure(g, sb);
+  const bool forward = pa >= pb;
+  const PipeEnd& up = forward ? a_ : b_;
+  const PipeEnd& dn = forward ? b_ : a_;
+  const EndState su = forward ? sa : sb, sd = forward ? sb : sa;
+  const double pd = sd.p;
+  FaceState fu = demandOutflowFace(g, su, [&](double p0, double T0) {
+    return ic_.massFlowForDrop(p0 - pd, T0, p0);
+  });
+  double mdot = -fu.mdot_in(su.A);
+  heat_W_ = 0.0;
+  if (!(mdot > 0.0)) {
+    a_.setFlux({0.0, pa * sa.A, 0.0});
+    b_.setFlux({0.0, pb * sb.A, 0.0});
+    mdot_ = 0.0;
+    return;
+  }
+  double p0u, T0u;
+  stagnation(g, fu, p0u, T0u);
+  double T0d = ic_.outletTemperature(T0u, T_cool_, mdot);
+  FaceState fd = massFlowFace(g, sd, mdot, T0d);
+  const double md = fd.mdot_in(sd.A);
+  if (md < mdot) {  // downstream face choked
+    mdot = md;
+    fu = massFlowFace(g, su, -mdot, 0.0);
+    stagnation(g, fu, p0u, T0u);
+    T0d = ic_.outletTemperature(T0u, T_cool_, mdot);
+    fd = massFlowFace(g, sd, mdot, T0d);
+  }
+  const EndFlux Fu = faceFlux(g, fu.rho, fu.u_in, fu.p, su.A);
+  const EndFlux Fd = faceFlux(g, fd.rho, fd.u_in, fd.p, sd.A);
+  const double e_out = mdot * g.cp() * T0d;
+  up.setFlux(Fu);
+  dn.setFlux({mdot, Fd.momentum, e_out});
+  heat_W_ = -Fu.energy_in - e_out;
+  T0_out_ = T0d;
+  mdot_ = forward ? mdot : -mdot;
+}
+
+}  // namespace hbt::engine1d

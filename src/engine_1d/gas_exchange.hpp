@@ -1,0 +1,65 @@
+// Gas-exchange elements of the engine assembly that plug into the gasdyn network:
+//
+// CrankValveArea (gasdyn::AreaProvider): effective area of the 2 intake or 2 exhaust poppet valves
+// of one cylinder, read from the cylinder's own crank angle theta (firing TDC = 0, [-360, 360)):
+//   A_eff(theta, dir) = n_v Cd_dir(L/d) pi d L(theta),  L = L_max sin(pi phi/Delta)^k  (0 outside)
+//   phi = (theta - theta_open) mod 720, Delta = theta_close - theta_open (valve events of the
+//   cylinder model). Tabulated at construction every 0.25 deg (linear interpolation, O(1)).
+//   Valve convention (gasdyn::Valve): Forward = from the cylinder into the runner. Intake: normal
+//   flow is Reverse; exhaust: normal flow is Forward.
+//
+// ChargeAirCoolerLink (gasdyn::Boundary) joins the compressor-outlet pipe end A (hot) and the
+// charge-air duct pipe end B (cold) through the quasi-steady air-to-air intercooler of src/turbo:
+//   mdot = sqrt(dp p0/(K T0)),  dp = p0_face,up - p_down   (dp = K mdot^2 T/p of the core)
+//   T0_out = T0_in - eps(mdot) (T0_in - T_cool),  T_cool = T_ambient (+ offset)          [K]
+// Flow direction from the wall pressures of both ends; the upstream face is solved with its
+// characteristic (demand-driven outflow face), the downstream face carries the same mass flow
+// at T0_out. Heat removed Q = mdot cp (T0_in - T0_out) [W] (to the cooling air); mass is
+// conserved exactly, energy up to the reported heat. The core's gas volume is represented by
+// the charge-air duct pipe.
+#pragma once
+#include <vector>
+
+#include "cylinder/cylinder.hpp"
+#include "engine_1d/engine_1d_params.hpp"
+#include "gasdyn/area_provider.hpp"
+#include "gasdyn/boundary.hpp"
+#include "turbo/intercooler.hpp"
+
+namespace hbt::engine1d {
+
+class CrankValveArea final : public gasdyn::AreaProvider {
+ public:
+  /// open/close [deg, cylinder crank angle]; normal_is_forward: exhaust true, intake false.
+  CrankValveArea(const cyl::Cylinder& cylinder, const ValveSpec& v, double open_deg,
+                 double close_deg, bool normal_is_forward);
+  double effectiveArea(gasdyn::FlowDirection dir, double t) const override;
+  double areaAt(double theta_deg, bool forward) const;
+  double lift(double theta_deg) const;  // [m]
+
+ private:
+  const cyl::Cylinder& cyl_;
+  ValveSpec v_;
+  double open_, duration_;
+  std::vector<double> fwd_, rev_;  // over theta = -360 ... 360 step kStep
+};
+
+class ChargeAirCoolerLink final : public gasdyn::Boundary {
+ public:
+  ChargeAirCoolerLink(std::string name, gasdyn::PipeEnd hot, gasdyn::PipeEnd cold,
+                      const turbo::Intercooler& cooler);
+  void setCoolingAirTemperature(double T_K) { T_cool_ = T_K; }
+  void computeFluxes(double t) override;
+  void afterStep(double dt) override { heat_J_ += heat_W_ * dt; }
+  double massFlow() const { return mdot_; }      // hot -> cold [kg/s]
+  double heatRemoved() const { return heat_W_; }  // [W]
+  double heatRemovedTotal() const { return heat_J_; }  // [J]
+  double outletT0() const { return T0_out_; }     // [K]
+
+ private:
+  gasdyn::PipeEnd a_, b_;
+  const turbo::Intercooler& ic_;
+  double T_cool_ = 298.15, mdot_ = 0.0, heat_W_ = 0.0, heat_J_ = 0.0, T0_out_ = 298.15;
+};
+
+}  // namespace hbt::engine1d
