@@ -93,6 +93,7 @@ void Stepper::onStatus(const StepStatus::ConstPtr& s) {
       if (s->status == StepStatus::READY || s->status == StepStatus::WAITING) {
         p.last_status = s->status;
         p.last_step = s->step;
+        p.waiting_for = s->message;
       }
       return;
     case Phase::Stepping:
@@ -155,8 +156,11 @@ void Stepper::onTimer(const ros::WallTimerEvent&) {
     case Phase::Sync: {
       if (secondsSince(phase_since_) > startup_timeout_s_) {
         const std::string m = missing([](const Peer& p) { return p.announced; });
+        std::string links;
+        for (const auto& n : names_)
+          if (!peers_[n].waiting_for.empty()) links += " " + n + ":" + peers_[n].waiting_for;
         finish(true, "start-up timed out after " + std::to_string(startup_timeout_s_) + " s; " +
-                         (m.empty() ? "links not connected" : "no answer from: " + m));
+                         (m.empty() ? "links not connected:" + links : "no answer from: " + m));
         return;
       }
       if (phase_ == Phase::Announce) {
@@ -165,7 +169,9 @@ void Stepper::onTimer(const ros::WallTimerEvent&) {
         sendSync();
         return;
       }
-      bool all_ready = cmd_pub_.getNumSubscribers() >= names_.size();
+      // (answering round r proves the participant hears /sim/step; subscriber counts cannot be
+      // used: in one nodelet manager all participants share one subscription per topic)
+      bool all_ready = true;
       for (const auto& n : names_) {
         const Peer& p = peers_[n];
         all_ready = all_ready && p.last_status == StepStatus::READY && p.last_step == sync_round_;

@@ -33,6 +33,7 @@ class Stepper {
     uint64_t last_step = 0;
     bool announced = false, done = false, closed = false;
     double cpu_s = 0.0;
+    std::string waiting_for;  // last WAITING message (links not yet connected)
   };
   void onStatus(const hybrid_bus_twin::StepStatus::ConstPtr& s);
   void onTimer(const ros::WallTimerEvent&);

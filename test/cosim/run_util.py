@@ -56,11 +56,13 @@ def bag_messages(bag_path):
     return out
 
 
-def pid_of_node(name, timeout_s=30.0):
-    """PID of the process started with __name:=<name>."""
+def pid_of_node(proc, name, timeout_s=30.0):
+    """PID of the process started with __name:=<name> by the roslaunch `proc` (same session:
+    other runs on the machine are never touched)."""
     t0 = time.time()
     while time.time() - t0 < timeout_s:
-        r = subprocess.run(["pgrep", "-f", "__name:=%s( |$)" % name], capture_output=True, text=True)
+        r = subprocess.run(["pgrep", "-s", str(proc.pid), "-f", "__name:=%s( |$)" % name],
+                           capture_output=True, text=True)
         pids = [int(p) for p in r.stdout.split()]
         if pids:
             return pids[0]

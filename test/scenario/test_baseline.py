@@ -1,0 +1,156 @@
+#!/usr/bin/env python3
+"""Scenario tests of baseline_urban on short stretches of the Urban mission (until:=...):
+nodes vs nodelets and repeated runs give bit-identical bags; the driveline energy balance of the
+run closes and the engine's own brake work agrees with the work the vehicle received; a killed
+node stops the run within 2 s naming it with a readable bag; bad input (missing, malformed or
+truncated cycle, negative mass, unknown key, NaN) is rejected before the first step with a
+message naming the file and the key."""
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
+import run_util  # noqa: E402
+
+LAUNCH = os.path.join(REPO, "launch", "baseline_urban.launch")
+UNTIL = 60.0
+LHV_J_KG = 42.7e6
+
+
+def last(bag, topic):
+    import rosbag
+    with rosbag.Bag(bag) as b:
+        msg = None
+        for _, msg, _ in b.read_messages(topics=[topic]):
+            pass
+    return msg
+
+
+class Baseline(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="hbt_baseline_")
+        cls.runs = {}
+        for name, mode in (("nodes", "nodes"), ("nodes2", "nodes"), ("nodelets", "nodelets")):
+            out = os.path.join(cls.tmp, name)
+            st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL)
+            cls.runs[name] = (out, st)
+
+    def test_runs_complete(self):
+        for name, (out, st) in self.runs.items():
+            self.assertEqual(st["status"], "ok", (name, st))
+            self.assertAlmostEqual(st["sim_time_s"], UNTIL, places=9)
+
+    def test_modes_and_repeats_bit_identical(self):
+        bags = {n: run_util.bag_messages(os.path.join(o, "run.bag")) for n, (o, _) in self.runs.items()}
+        n_steps = int(round(UNTIL / 0.01)) + 1
+        self.assertEqual(len(bags["nodes"]), 6 * n_steps, "6 topics at every stamp incl. t=0")
+        self.assertEqual(bags["nodes"], bags["nodes2"])
+        self.assertEqual(bags["nodes"], bags["nodelets"])
+
+    def test_energy_balance(self):
+        bag = os.path.join(self.runs["nodes"][0], "run.bag")
+        v = last(bag, "/vehicle/state")
+        e = last(bag, "/engine/state")
+        losses = (v.aux_work_j + v.gearbox_drag_loss_j + v.converter_loss_j + v.gear_loss_j +
+                  v.retarder_loss_j + v.axle_loss_j + v.shift_loss_j + v.rolling_loss_j +
+                  v.aero_loss_j + v.potential_energy_j + v.friction_brake_loss_j)
+        # driveline: work the crank received = every loss + change of kinetic energy (1%)
+        self.assertGreater(v.engine_work_j, 1e5)
+        self.assertAlmostEqual((losses + v.kinetic_energy_change_j) / v.engine_work_j, 1.0, delta=0.01)
+        # engine side: its brake work (own speed and torque) = work booked by the vehicle (1%)
+        engine_work = e.positive_work_j + e.motoring_work_j
+        self.assertAlmostEqual(engine_work / v.engine_work_j, 1.0, delta=0.01)
+        # fuel energy covers the brake work with a plausible mean efficiency (urban, idling)
+        eff = e.positive_work_j / (e.fuel_mass_kg * LHV_J_KG)
+        self.assertGreater(eff, 0.10)
+        self.assertLess(eff, 0.46)
+
+
+class Failures(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="hbt_fail_")
+
+    def config_copy(self, edit_file=None, edit=None):
+        cfg = os.path.join(self.tmp, "config")
+        shutil.copytree(os.path.join(REPO, "config"), cfg, ignore=shutil.ignore_patterns("data"))
+        os.symlink(os.path.join(REPO, "config", "data"), os.path.join(cfg, "data"))
+        if edit_file:
+            p = os.path.join(cfg, edit_file)
+            with open(p) as f:
+                text = f.read()
+            with open(p, "w") as f:
+                f.write(edit(text))
+        return cfg
+
+    def expect_rejected(self, file_part, key_part, **args):
+        out = os.path.join(self.tmp, "out")
+        st = run_util.run_launch(LAUNCH, out, until=5.0, **args)
+        self.assertEqual(st["status"], "error", st)
+        self.assertEqual(st["steps"], 0, "rejected before the first step")
+        self.assertIn(file_part, st["message"])
+        self.assertIn(key_part, st["message"])
+
+    def write_cycle(self, text):
+        p = os.path.join(self.tmp, "bad.vdri")
+        with open(p, "w") as f:
+            f.write(text)
+        return p
+
+    def test_missing_cycle_file(self):
+        self.expect_rejected("nonexistent.vdri", "(file)", cycle_file=os.path.join(self.tmp, "nonexistent.vdri"))
+
+    def test_malformed_cycle(self):
+        p = self.write_cycle("<s>,<v>,<grad>,<stop>\n0,0,0,10\n100,abc,0,0\n")
+        self.expect_rejected("bad.vdri", "'v'", cycle_file=p)
+
+    def test_truncated_cycle(self):
+        p = self.write_cycle("<s>,<v>,<grad>,<stop>\n0,0,0,10\n100,30,0,0\n200,30\n")
+        self.expect_rejected("bad.vdri", "line 4", cycle_file=p)
+
+    def test_nan_in_cycle(self):
+        p = self.write_cycle("<s>,<v>,<grad>,<stop>\n0,0,0,10\n100,nan,0,0\n")
+        self.expect_rejected("bad.vdri", "'v'", cycle_file=p)
+
+    def test_negative_mass(self):
+        cfg = self.config_copy("vehicle.yaml", lambda t: t.replace("curb_mass_kg: 15160.0", "curb_mass_kg: -15160.0", 1))
+        self.expect_rejected("vehicle.yaml", "chassis/curb_mass_kg", config=cfg)
+
+    def test_unknown_key(self):
+        cfg = self.config_copy("engine_map.yaml", lambda t: t + "\nfuel_lhv_j_per_kg: 42.7e6\n")
+        self.expect_rejected("engine_map.yaml", "fuel_lhv_j_per_kg", config=cfg)
+
+    def test_nan_parameter(self):
+        cfg = self.config_copy("engine_map.yaml", lambda t: t.replace("volumetric_efficiency: 0.90", "volumetric_efficiency: .nan", 1))
+        self.expect_rejected("engine_map.yaml", "volumetric_efficiency", config=cfg)
+
+    def test_killed_node_stops_run(self):
+        out = os.path.join(self.tmp, "kill")
+        proc = run_util.start_launch(LAUNCH, out, until=0)
+        pid = run_util.pid_of_node(proc, "engine")
+        # wait until the run is stepping (the vehicle wrote its profile, then some wall time)
+        time.sleep(6.0)
+        self.assertIsNone(proc.poll())
+        t_kill = time.time()
+        os.kill(pid, signal.SIGKILL)
+        run_util.wait(proc, 60)
+        st = run_util.read_status(out)
+        delay = os.path.getmtime(os.path.join(out, "status.json")) - t_kill
+        self.assertEqual(st["status"], "error")
+        self.assertIn("engine", st["message"])
+        self.assertLess(delay, 2.0)
+        self.assertGreater(st["steps"], 10)
+        msgs = run_util.bag_messages(os.path.join(out, "run.bag"))
+        self.assertGreater(len(msgs), 60)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
