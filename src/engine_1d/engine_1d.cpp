@@ -26,6 +26,7 @@ Engine1D::Engine1D(const Engine1DParams& p, const std::string& root) : P_(p) {
   P_.validate();
   tc_ = std::make_unique<turbo::Turbocharger>(turbo::buildTurbocharger(P_.turbo, root));
   ref_ = std::make_unique<engine_map::MapEngine>(P_.reference, root);
+  maps_ = EngineAssembly::FlowMaps::build(*tc_);
   cyl::Cylinder probe(P_.cylinder, "probe");
   ctl_ = std::make_unique<EngineControllers>(P_.engine, probe.thermo().afrStoich(),
                                              P_.cylinder.fuel_ref_kg);
@@ -53,7 +54,7 @@ void Engine1D::reset(double w, double torque, double T_amb, double p_amb, double
   const double cps = 6.0 * w / (4.0 * M_PI);
   in.fuel_per_cycle_kg = treq > tmot ? ref_->steadyFuel(w, treq) / cps : 0.0;
   asm_.reset();
-  asm_ = std::make_unique<EngineAssembly>(P_, *tc_, in);
+  asm_ = std::make_unique<EngineAssembly>(P_, *tc_, maps_, in);
   ctl_->reset(0.5);
   cmd_ = ControlCommand();
   cmd_.fuel_per_cycle_kg = in.fuel_per_cycle_kg;

@@ -106,6 +106,7 @@ class Engine1D {
   Engine1DParams P_;
   std::unique_ptr<turbo::Turbocharger> tc_;
   std::unique_ptr<engine_map::MapEngine> ref_;
+  EngineAssembly::FlowMaps maps_;
   std::unique_ptr<EngineAssembly> asm_;
   std::unique_ptr<EngineControllers> ctl_;
   ControlCommand cmd_;

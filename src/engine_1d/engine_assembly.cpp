@@ -18,13 +18,23 @@ void requireFinite(double v, const std::string& where, const char* what) {
 }
 }  // namespace
 
+EngineAssembly::FlowMaps EngineAssembly::FlowMaps::build(const turbo::Turbocharger& tc) {
+  FlowMaps m;
+  m.compressor = std::make_shared<CompressorFlowMap>(tc.compressor);
+  m.turbine[0] = std::make_shared<TurbineFlowMap>(tc.turbine.entry(0), &tc.turbine.wastegate());
+  m.turbine[1] = std::make_shared<TurbineFlowMap>(tc.turbine.entry(1), nullptr);
+  return m;
+}
+
 EngineAssembly::EngineAssembly(const Engine1DParams& p, const turbo::Turbocharger& tc,
-                               const Initial& init)
+                               const FlowMaps& maps, const Initial& init)
     : P_(p),
       tc_(tc),
       shaft_(tc.shaft),
       intake_(gasdyn::PerfectGas{p.turbo.compressor_options.gamma, p.turbo.air_gas_constant}),
-      exhaust_(gasdyn::PerfectGas{p.turbo.exhaust_gamma, p.turbo.exhaust_gas_constant}) {
+      exhaust_(gasdyn::PerfectGas{p.turbo.exhaust_gamma, p.turbo.exhaust_gas_constant}),
+      comp_map_(maps.compressor),
+      turb_map_(maps.turbine) {
   cp_in_ = intake_.gas().cp();
   cp_ex_ = exhaust_.gas().cp();
   build(init);
@@ -66,9 +76,6 @@ void EngineAssembly::build(const Initial& in) {
     cyl_[k]->initialize(th, exhaust_side ? in.p3 : in.p_im, exhaust_side ? in.T3 : in.T_im + 30.0,
                         0.05);
   }
-  comp_map_ = std::make_shared<CompressorFlowMap>(tc_.compressor);
-  turb_map_[0] = std::make_shared<TurbineFlowMap>(tc_.turbine.entry(0), &tc_.turbine.wastegate());
-  turb_map_[1] = std::make_shared<TurbineFlowMap>(tc_.turbine.entry(1), nullptr);
   shaft_.setOmega(in.turbo_rad_s);
   T_amb_ = in.T_amb;
 

@@ -70,7 +70,14 @@ class EngineAssembly {
     double p_im = 1.2e5, T_im = 310.0, p3 = 1.3e5, T3 = 700.0, turbo_rad_s = 4000.0;
     double p_amb = 101325.0, T_amb = 298.15, fuel_per_cycle_kg = 0.0, coolant_K = 363.15;
   };
-  EngineAssembly(const Engine1DParams& p, const turbo::Turbocharger& tc, const Initial& init);
+  /// Flow maps tabulated once per turbocharger (shared between resets).
+  struct FlowMaps {
+    std::shared_ptr<CompressorFlowMap> compressor;
+    std::array<std::shared_ptr<TurbineFlowMap>, 2> turbine;  // entry 0 with the wastegate
+    static FlowMaps build(const turbo::Turbocharger& tc);
+  };
+  EngineAssembly(const Engine1DParams& p, const turbo::Turbocharger& tc, const FlowMaps& maps,
+                 const Initial& init);
   EngineAssembly(const EngineAssembly&) = delete;
   EngineAssembly& operator=(const EngineAssembly&) = delete;
 
