@@ -76,8 +76,18 @@ void Engine1DConfig::declare(ParamSet& ps) {
          "largest crank-angle increment of one coupled step");
   ps.add("numerics/cylinder_substep_deg", cylinder_substep_deg, "deg", 0.0, 10.0,
          "> 0 overrides cylinder/numerics/max_substep_deg");
+  ps.add("numerics/nox_interval_deg", nox_interval_deg, "deg", 0.0, 20.0,
+         "> 0 overrides cylinder/nox/interval_deg");
   ps.add("numerics/initial_turbo_speed_rpm", initial_turbo_speed_rpm, "rpm", 0.0, 2e5,
          "turbo speed at reset (scaled with the requested load)");
+  ps.add("calibration/woschni_multiplier", woschni_multiplier, "-", 0.0, 3.0,
+         "> 0 overrides cylinder/heat_transfer/multiplier");
+  ps.add("calibration/diffusion_tail_scale", diffusion_tail_scale, "-", 0.3, 3.0,
+         "factor on cylinder/combustion/diffusion_tail_deg");
+  ps.add("calibration/premixed_duration_scale", premixed_duration_scale, "-", 0.3, 3.0,
+         "factor on cylinder/combustion/premixed_duration_deg");
+  ps.add("calibration/friction_scale", friction_scale, "-", 0.3, 2.0,
+         "factor on the Chen-Flynn constant and speed terms");
   ps.add("friction_to_coolant", friction_to_coolant, "-", 0.0, 1.0,
          "share of friction power rejected to the coolant");
   ps.add("files/cylinder", cylinder_file, "cylinder model YAML (relative to the repo root)");
@@ -100,7 +110,11 @@ Engine1DParams Engine1DParams::load(const std::string& root, const std::string& 
     ParamSet ps;
     p.cylinder.declare(ps);
     applyParams(ps, src, {"cylinder_rig/"});
-    p.cylinder.finalize(src.file);
+  }
+  p.applyCalibration();
+  {
+    const std::string f = resolvePath(root, p.engine.cylinder_file);
+    p.cylinder.finalize(f);
   }
   {
     const ParamSource src = readYamlParams(resolvePath(root, p.engine.turbo_file));
@@ -117,6 +131,16 @@ Engine1DParams Engine1DParams::load(const std::string& root, const std::string& 
   }
   p.validate();
   return p;
+}
+
+void Engine1DParams::applyCalibration() {
+  const Engine1DConfig& e = engine;
+  if (e.woschni_multiplier > 0.0) cylinder.woschni.multiplier = e.woschni_multiplier;
+  for (double& v : cylinder.diffusion_tail_deg) v *= e.diffusion_tail_scale;
+  for (double& v : cylinder.premixed_duration_deg) v *= e.premixed_duration_scale;
+  cylinder.friction.A_bar *= e.friction_scale;
+  cylinder.friction.C_bar_s_m *= e.friction_scale;
+  cylinder.friction.D_bar_s2_m2 *= e.friction_scale;
 }
 
 void Engine1DParams::validate() const {
@@ -139,6 +163,12 @@ void Engine1DParams::validate() const {
   if (e.boost_pressure_ratio.size() != e.boost_speed_rpm.size() * e.boost_load.size())
     throw InputError(f, "engine_1d/control/boost_pressure_ratio",
                      "needs speeds x loads values (row-major)");
+  if (e.cylinder_substep_deg > 0.0 && e.cylinder_substep_deg < e.coupling_max_deg)
+    throw InputError(f, "engine_1d/numerics/cylinder_substep_deg",
+                     "must be >= numerics/coupling_max_deg (one cylinder step per coupled step)");
+  if (e.cylinder_substep_deg <= 0.0 && cylinder.max_substep_deg < e.coupling_max_deg)
+    throw InputError(f, "engine_1d/numerics/coupling_max_deg",
+                     "exceeds cylinder/numerics/max_substep_deg: set numerics/cylinder_substep_deg");
   if (cylinder.geometry.bore_m <= 0.0)
     throw InputError(f, "cylinder/geometry/bore_m", "must be > 0");
 }

@@ -71,7 +71,13 @@ struct Engine1DConfig {
   // Numerics
   double coupling_max_deg = 2.0;         // largest crank-angle step of the coupled step
   double cylinder_substep_deg = 0.0;     // > 0 overrides cylinder/numerics/max_substep_deg
+  double nox_interval_deg = 0.0;         // > 0 overrides cylinder/nox/interval_deg
   double friction_to_coolant = 0.5;      // share of friction power rejected to the coolant
+  // Calibration of the cylinder model for this assembly (applied on top of cylinder/*):
+  double woschni_multiplier = 0.0;       // > 0 overrides cylinder/heat_transfer/multiplier
+  double diffusion_tail_scale = 1.0;     // x cylinder/combustion/diffusion_tail_deg
+  double premixed_duration_scale = 1.0;  // x cylinder/combustion/premixed_duration_deg
+  double friction_scale = 1.0;           // x Chen-Flynn A, C, D (B: peak-pressure term kept)
   double initial_turbo_speed_rpm = 40000.0;
   // Files of the other models (relative to the repository root)
   std::string cylinder_file = "config/engine_1d_cylinder.yaml";
@@ -93,6 +99,9 @@ struct Engine1DParams {
   /// names; each file is applied with its own ParamSet, so errors name the file and the key.
   static Engine1DParams load(const std::string& repo_root,
                              const std::string& engine_file = "config/engine_1d.yaml");
+  /// Applies engine.calibration factors to the cylinder parameters (once, by load()). Callers
+  /// filling the parameters themselves (ROS node) call it, then cylinder.finalize().
+  void applyCalibration();
   /// Checks cross-field consistency (throws InputError naming engine_source and the key).
   void validate() const;
 };

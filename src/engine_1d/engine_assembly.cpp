@@ -62,6 +62,7 @@ void EngineAssembly::build(const Initial& in) {
   const Engine1DConfig& E = P_.engine;
   cyl::CylinderParams cp = P_.cylinder;
   if (E.cylinder_substep_deg > 0.0) cp.max_substep_deg = E.cylinder_substep_deg;
+  if (E.nox_interval_deg > 0.0) cp.nox_interval_deg = E.nox_interval_deg;
   for (int j = 0; j < 6; ++j) {
     const int c = static_cast<int>(E.firing_order[j]) - 1;
     phase_deg_[c] = 120.0 * j;
@@ -95,7 +96,7 @@ void EngineAssembly::build(const Initial& in) {
     intake_.connect(*run_in_[k], End::Left, *plenum_);
     res_in_[k] = &intake_.addReservoir("cyl" + num(k) + "_intake_side", in.p_im, in.T_im);
     auto area = std::make_shared<CrankValveArea>(*cyl_[k], E.intake_valve, cp.ivo_deg, cp.ivc_deg, false);
-    intake_.add<gasdyn::Valve>("intake_valves_" + num(k), *res_in_[k], gasdyn::rightEnd(*run_in_[k]), area);
+    intake_.add<CylinderValve>("intake_valves_" + num(k), *res_in_[k], gasdyn::rightEnd(*run_in_[k]), area);
   }
   // --- exhaust network ---
   turb_out_ = &exhaust_.addVolume("turbine_outlet", E.turbine_outlet_m3, in.p_amb * 1.1, in.T3 - 100.0);
@@ -111,7 +112,7 @@ void EngineAssembly::build(const Initial& in) {
     run_ex_[k] = &pipe(exhaust_, "exhaust_runner_" + num(k), E.exhaust_runner, E.exhaust_friction_darcy, true);
     res_ex_[k] = &exhaust_.addReservoir("cyl" + num(k) + "_exhaust_side", in.p3, in.T3);
     auto area = std::make_shared<CrankValveArea>(*cyl_[k], E.exhaust_valve, cp.evo_deg, cp.evc_deg, true);
-    exhaust_.add<gasdyn::Valve>("exhaust_valves_" + num(k), *res_ex_[k], gasdyn::leftEnd(*run_ex_[k]), area);
+    exhaust_.add<CylinderValve>("exhaust_valves_" + num(k), *res_ex_[k], gasdyn::leftEnd(*run_ex_[k]), area);
     exhaust_.connect(*run_ex_[k], End::Right, *junction_[k < 3 ? 0 : 1]);
   }
   down_pipe_ = &pipe(exhaust_, "downpipe", E.downpipe, E.exhaust_friction_darcy, true);

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "common/table1d.hpp"
+#include "engine_1d/fast_faces.hpp"
+#include "gasdyn/boundaries.hpp"
 #include "gasdyn/characteristics.hpp"
 
 namespace hbt::engine1d {
@@ -49,6 +51,41 @@ double CrankValveArea::effectiveArea(gasdyn::FlowDirection dir, double) const {
   return areaAt(cyl_.crankAngle_deg(), dir == gasdyn::FlowDirection::Forward);
 }
 
+CylinderValve::CylinderValve(std::string name, gasdyn::Volume& v, gasdyn::PipeEnd end,
+                             std::shared_ptr<const CrankValveArea> area)
+    : Boundary(std::move(name)), vol_(v), area_(std::move(area)) {
+  end_ = claim(end);
+  vol_.registerConnection(end_.area());
+}
+
+void CylinderValve::computeFluxes(double t) {
+  using namespace gasdyn;
+  const PerfectGas& g = end_.pipe->gas();
+  const EndState s = end_.state();
+  const double a_in = area_->effectiveArea(FlowDirection::Forward, t);
+  const double a_out = area_->effectiveArea(FlowDirection::Reverse, t);
+  const double pv = vol_.p(), Tv = vol_.T();
+  FaceState f;
+  if (a_in <= 0.0 && a_out <= 0.0) {
+    f = closedFace(g, s);
+    guess_in_ = guess_out_ = 0.0;
+  } else {
+    const double pb0 = closedFacePressure(g, s);
+    if (pv > pb0 && a_in > 0.0) {
+      f = warmInflowFace(g, s, [&](double pb) { return Supply{nozzleMassFlow(g, a_in, pv, Tv, pb), Tv}; },
+                         guess_in_);
+      guess_out_ = 0.0;
+    } else if (pv < pb0 && a_out > 0.0) {
+      f = warmOutflowFace(g, s, [&](double p0, double T0) { return nozzleMassFlow(g, a_out, p0, T0, pv); },
+                          guess_out_);
+      guess_in_ = 0.0;
+    } else {
+      f = closedFace(g, s);
+    }
+  }
+  mdot_ = applyFace(f, end_, &vol_);
+}
+
 ChargeAirCoolerLink::ChargeAirCoolerLink(std::string name, gasdyn::PipeEnd hot,
                                          gasdyn::PipeEnd cold, const turbo::Intercooler& cooler)
     : Boundary(std::move(name)), ic_(cooler) {
@@ -66,9 +103,12 @@ void ChargeAirCoolerLink::computeFluxes(double) {
   const PipeEnd& dn = forward ? b_ : a_;
   const EndState su = forward ? sa : sb, sd = forward ? sb : sa;
   const double pd = sd.p;
-  FaceState fu = demandOutflowFace(g, su, [&](double p0, double T0) {
+  if (forward != (guess_ >= 0.0)) guess_ = 0.0;  // direction change: cold start
+  double gw = std::fabs(guess_);
+  FaceState fu = warmOutflowFace(g, su, [&](double p0, double T0) {
     return ic_.massFlowForDrop(p0 - pd, T0, p0);
-  });
+  }, gw);
+  guess_ = forward ? gw : -gw;
   double mdot = -fu.mdot_in(su.A);
   heat_W_ = 0.0;
   if (!(mdot > 0.0)) {

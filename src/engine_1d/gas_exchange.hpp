@@ -18,12 +18,14 @@
 // conserved exactly, energy up to the reported heat. The core's gas volume is represented by
 // the charge-air duct pipe.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "cylinder/cylinder.hpp"
 #include "engine_1d/engine_1d_params.hpp"
 #include "gasdyn/area_provider.hpp"
 #include "gasdyn/boundary.hpp"
+#include "gasdyn/volume.hpp"
 #include "turbo/intercooler.hpp"
 
 namespace hbt::engine1d {
@@ -44,6 +46,24 @@ class CrankValveArea final : public gasdyn::AreaProvider {
   std::vector<double> fwd_, rev_;  // over theta = -360 ... 360 step kStep
 };
 
+/// The valves of one side of a cylinder: gasdyn::Valve physics (isentropic nozzle with the
+/// pipe characteristic, both directions, choking; Forward = cylinder -> runner) with the
+/// warm-started face solver (fast_faces.hpp) and a direct (non-virtual) area look-up.
+/// The cylinder is seen through a reservoir Volume holding its p, T.
+class CylinderValve final : public gasdyn::Boundary {
+ public:
+  CylinderValve(std::string name, gasdyn::Volume& cylinder_side, gasdyn::PipeEnd end,
+                std::shared_ptr<const CrankValveArea> area);
+  void computeFluxes(double t) override;
+  double massFlowIn() const { return mdot_; }  // cylinder -> pipe [kg/s]
+
+ private:
+  gasdyn::Volume& vol_;
+  gasdyn::PipeEnd end_;
+  std::shared_ptr<const CrankValveArea> area_;
+  double mdot_ = 0.0, guess_in_ = 0.0, guess_out_ = 0.0;
+};
+
 class ChargeAirCoolerLink final : public gasdyn::Boundary {
  public:
   ChargeAirCoolerLink(std::string name, gasdyn::PipeEnd hot, gasdyn::PipeEnd cold,
@@ -59,6 +79,7 @@ class ChargeAirCoolerLink final : public gasdyn::Boundary {
  private:
   gasdyn::PipeEnd a_, b_;
   const turbo::Intercooler& ic_;
+  double guess_ = 0.0;
   double T_cool_ = 298.15, mdot_ = 0.0, heat_W_ = 0.0, heat_J_ = 0.0, T0_out_ = 298.15;
 };
 

@@ -1,0 +1,90 @@
+#include "engine_1d/node/engine_1d_participant.hpp"
+
+#include <hybrid_bus_twin/EngineHeat.h>
+#include <hybrid_bus_twin/EngineState.h>
+#include <hybrid_bus_twin/ExhaustState.h>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "cosim/param_loader.hpp"
+
+namespace hbt::engine1d {
+
+void Engine1DParticipant::configure() {
+  std::string pkg;
+  nh_.param<std::string>("/scenario/package_dir", pkg, ".");
+  Engine1DParams p = Engine1DParams::load(pkg, configFile());
+  std::string solver;
+  if (pnh_.getParam("solver", solver) && !solver.empty()) {
+    p.engine.solver = solver;
+    p.validate();
+  }
+  double ambient_c = 25.0;
+  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
+  pnh_.param("coolant_temperature_k", coolant_T_K_, 363.15);
+  if (!(coolant_T_K_ > 200.0 && coolant_T_K_ < 420.0))
+    throw InputError(configFile(), "coolant_temperature_k", "must be in (200, 420) K");
+  ambient_T_K_ = units::celsiusToK(ambient_c);
+  engine_ = std::make_unique<Engine1D>(p, pkg);
+  speed_rad_s_ = units::rpmToRadps(700.0);
+  engine_->reset(speed_rad_s_, 0.0, ambient_T_K_, 101325.0, coolant_T_K_);
+  command_ = &addInput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
+  state_pub_ = addOutput<hybrid_bus_twin::EngineState>("/engine/state");
+  exhaust_pub_ = addOutput<hybrid_bus_twin::ExhaustState>("/engine/exhaust");
+  heat_pub_ = addOutput<hybrid_bus_twin::EngineHeat>("/engine/heat");
+}
+
+void Engine1DParticipant::step(const ros::Time& t, double dt_s) {
+  const auto& cmd = command_->at(t);
+  Engine1DInputs in;
+  in.speed_rad_s = cmd.engine_speed_rad_s;
+  in.torque_request_Nm = cmd.torque_request_nm;
+  in.ambient_T_K = cmd.ambient_temperature_k > 0.0 ? cmd.ambient_temperature_k : ambient_T_K_;
+  in.ambient_p_Pa = cmd.ambient_pressure_pa > 0.0 ? cmd.ambient_pressure_pa : 101325.0;
+  in.back_pressure_Pa = 0.0;  // default orifice model until the aftertreatment node exists
+  in.coolant_T_K = coolant_T_K_;
+  in.fuel_enabled = cmd.engine_on;
+  speed_rad_s_ = in.speed_rad_s;
+  const Engine1DOutputs& o = engine_->step(dt_s, in);
+  const double work = o.brake_torque_Nm * speed_rad_s_ * dt_s;
+  (work > 0.0 ? positive_work_J_ : motoring_work_J_) += work;
+}
+
+void Engine1DParticipant::publishOutputs(const ros::Time& t) {
+  const Engine1DOutputs& o = engine_->outputs();
+  hybrid_bus_twin::EngineState s;
+  s.header.stamp = t;
+  s.engine_speed_rad_s = speed_rad_s_;
+  s.brake_torque_nm = o.brake_torque_Nm;
+  s.torque_max_nm = engine_->fullLoadTorque(speed_rad_s_);
+  s.torque_min_nm = engine_->motoringTorque(speed_rad_s_);
+  s.fuel_mass_flow_kg_s = o.fuel_mass_flow_kg_s;
+  s.fuel_mass_kg = o.fuel_mass_kg;
+  s.positive_work_j = positive_work_J_;
+  s.motoring_work_j = motoring_work_J_;
+  s.boost_pressure_pa = o.boost_pressure_Pa;
+  s.turbo_speed_rad_s = o.turbo_speed_rad_s;
+  s.lambda = o.lambda;
+  s.cpu_time_s = o.cpu_time_s;
+  state_pub_.publish(s);
+
+  hybrid_bus_twin::ExhaustState x;
+  x.header.stamp = t;
+  x.mass_flow_kg_s = o.exhaust_mass_flow_kg_s;
+  x.temperature_k = o.exhaust_T_K > 0.0 ? o.exhaust_T_K : ambient_T_K_;
+  x.y_o2 = o.exhaust.y_O2;
+  x.y_co2 = o.exhaust.y_CO2;
+  x.y_h2o = o.exhaust.y_H2O;
+  x.y_n2 = o.exhaust.y_N2;
+  x.nox_mass_flow_kg_s = o.nox_mass_flow_kg_s;
+  x.nox_mass_kg = o.nox_mass_kg;
+  exhaust_pub_.publish(x);
+
+  hybrid_bus_twin::EngineHeat h;
+  h.header.stamp = t;
+  h.heat_to_coolant_w = o.coolant_heat_W;
+  h.coolant_pump_speed_rad_s = speed_rad_s_;  // mechanical pump driven 1:1 by the crank
+  heat_pub_.publish(h);
+}
+
+}  // namespace hbt::engine1d

@@ -1,0 +1,38 @@
+// ROS bridge of the crank-angle-resolved 1D engine (engine_model:=1d): converts messages and
+// parameters, nothing else. Model: hbt::engine_1d::Engine1D (../engine_1d.hpp).
+//
+// Inputs  (stamped t_k): /vehicle/engine_command (imposed speed, torque request, ambient).
+// Outputs (stamped t_k): /engine/state, /engine/exhaust, /engine/heat (same as the map engine).
+// Parameters: `config_file` = config/engine_1d.yaml, read from disk with the files it names
+// (cylinder, turbo, reference map) so that errors name each file and key; `solver` (fsm|tvd,
+// optional) overrides engine_1d/solver. Until the aftertreatment and cooling nodes exist the
+// back-pressure comes from the model's documented constant-orifice default and the coolant is
+// at its thermostat temperature (coolant_temperature_k, default 363.15 K).
+#pragma once
+#include <hybrid_bus_twin/EngineCommand.h>
+
+#include <memory>
+
+#include "cosim/participant.hpp"
+#include "engine_1d/engine_1d.hpp"
+
+namespace hbt::engine1d {
+
+class Engine1DParticipant : public cosim::Participant {
+ public:
+  Engine1DParticipant(ros::NodeHandle nh, ros::NodeHandle pnh) : Participant(nh, pnh) {}
+
+ protected:
+  void configure() override;
+  void publishOutputs(const ros::Time& t) override;
+  void step(const ros::Time& t, double dt_s) override;
+
+ private:
+  std::unique_ptr<Engine1D> engine_;
+  cosim::Input<hybrid_bus_twin::EngineCommand>* command_ = nullptr;
+  ros::Publisher state_pub_, exhaust_pub_, heat_pub_;
+  double speed_rad_s_ = 0.0, ambient_T_K_ = 298.15, coolant_T_K_ = 363.15;
+  double positive_work_J_ = 0.0, motoring_work_J_ = 0.0;
+};
+
+}  // namespace hbt::engine1d

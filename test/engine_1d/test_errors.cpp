@@ -1,0 +1,94 @@
+// Robustness: a bad configuration raises InputError naming the file and the key; a diverging
+// state raises ModelDivergence naming the element; no NaN reaches the outputs.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "common/errors.hpp"
+#include "support.hpp"
+
+using namespace hbt::engine1d;
+using namespace hbt::engine1d::test;
+
+namespace {
+std::string writeVariant(const std::string& from, const std::string& to, const std::string& name) {
+  std::ifstream in(repoRoot() + "/config/engine_1d.yaml");
+  std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  s.replace(pos, from.size(), to);
+  const std::string path = "/tmp/engine_1d_test_" + name + ".yaml";
+  std::ofstream(path) << s;
+  return path;
+}
+}  // namespace
+
+TEST(Engine1DErrors, OutOfRangeValueNamesFileAndKey) {
+  const std::string f = writeVariant("plenum_m3: 4.0e-3", "plenum_m3: -1.0", "range");
+  try {
+    Engine1DParams::load(repoRoot(), f);
+    FAIL() << "no InputError";
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.file(), f);
+    EXPECT_EQ(e.key(), "engine_1d/intake/plenum_m3");
+  }
+}
+
+TEST(Engine1DErrors, UnknownKeyAndBadSolverAreRejected) {
+  const std::string f = writeVariant("tvd_mesh_factor: 2.0", "tvd_mesh_factor: 2.0\n  tvd_mesh_factr: 3", "typo");
+  try {
+    Engine1DParams::load(repoRoot(), f);
+    FAIL() << "no InputError";
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.file(), f);
+    EXPECT_NE(std::string(e.what()).find("tvd_mesh_factr"), std::string::npos) << e.what();
+  }
+  const std::string g = writeVariant("solver: fsm", "solver: lax", "solver");
+  try {
+    Engine1DParams::load(repoRoot(), g);
+    FAIL() << "no InputError";
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.file(), g);
+    EXPECT_EQ(e.key(), "engine_1d/solver");
+  }
+  const std::string h = writeVariant("cd_normal: [0.72, 0.70, 0.67", "cd_normal: [0.70, 0.67", "cd");
+  EXPECT_THROW(Engine1DParams::load(repoRoot(), h), hbt::InputError);
+}
+
+TEST(Engine1DErrors, DivergenceNamesTheElement) {
+  Engine1DParams p = defaultParams();
+  Engine1D e(p, repoRoot());
+  e.reset(1400.0 * kRpm, 500.0);
+  run(e, 1400.0, 500.0, 0.2);
+  // impose a non-physical back pressure: the downpipe empties backwards into the turbine outlet
+  // until a cell or a volume goes non-physical, or the step collapses
+  Engine1DInputs in;
+  in.speed_rad_s = 1400.0 * kRpm;
+  in.torque_request_Nm = 500.0;
+  in.back_pressure_Pa = 1e9;
+  try {
+    for (int i = 0; i < 200; ++i) {
+      const Engine1DOutputs& o = e.step(0.01, in);
+      ASSERT_TRUE(std::isfinite(o.brake_torque_Nm));
+    }
+    FAIL() << "no ModelDivergence";
+  } catch (const hbt::ModelDivergence& d) {
+    const std::string w = d.what();
+    std::printf("divergence: %s\n", w.c_str());
+    const bool named = w.find("pipe ") != std::string::npos || w.find("volume ") != std::string::npos ||
+                       w.find("cylinder ") != std::string::npos || w.find("turbine") != std::string::npos ||
+                       w.find("downpipe") != std::string::npos || w.find("compressor") != std::string::npos ||
+                       w.find("turbocharger") != std::string::npos;
+    EXPECT_TRUE(named) << w;
+  }
+}
+
+TEST(Engine1DErrors, NonFiniteInputIsRejected) {
+  Engine1D e(defaultParams(), repoRoot());
+  e.reset(1400.0 * kRpm, 300.0);
+  Engine1DInputs in;
+  in.speed_rad_s = std::nan("");
+  in.torque_request_Nm = 300.0;
+  EXPECT_THROW(e.step(0.01, in), hbt::ModelDivergence);
+}
