@@ -46,24 +46,27 @@ def launch_args(pairs):
 
 
 def stops_served(veh, stops_path):
-    """Stops of the mission (from the profile written by the vehicle node) at which the bus
-    stood still (< 0.5 km/h) within 10 m of the stop position."""
+    """Stops of the mission (stops.csv, written by the vehicle node from the time-based profile).
+    A stop is served when the bus stands still (< 0.5 km/h) for at least 90 % of the stop time
+    within the profile's window [t_start, t_start + stop time + 2 s]. Returns (served, total,
+    max distance between the standstill position and the stop position [m])."""
     if not os.path.exists(stops_path):
-        return None, None
+        return None, None, None
     stops = np.loadtxt(stops_path, delimiter=",", skiprows=1, ndmin=2)
-    if stops.size == 0:
-        return 0, 0
-    still = veh["speed_m_s"] < 0.5 / 3.6
-    s_still = veh["distance_m"][still]
-    t_end = veh["t"][-1]
-    served, total = 0, 0
-    for pos, t_expected in zip(stops[:, 0], stops[:, 1]):
-        if t_expected > t_end:  # beyond the simulated stretch (until:=)
+    t, v, s = veh["t"], veh["speed_m_s"], veh["distance_m"]
+    dt = np.diff(t, append=t[-1])
+    still = v < 0.5 / 3.6
+    served, total, max_pos_err = 0, 0, 0.0
+    for pos, t0, dur in stops:
+        if t0 + dur > t[-1]:  # beyond the simulated stretch (until:=)
             continue
         total += 1
-        if s_still.size and np.min(np.abs(s_still - pos)) < 10.0:
+        win = (t >= t0) & (t <= t0 + dur + 2.0) & still
+        if np.sum(dt[win]) >= 0.9 * dur:
             served += 1
-    return served, total
+        if win.any():
+            max_pos_err = max(max_pos_err, float(np.max(np.abs(s[win] - pos))))
+    return served, total, max_pos_err
 
 
 def summarise(out, scenario, args, status, data):
@@ -92,9 +95,10 @@ def summarise(out, scenario, args, status, data):
         "speed_rmse_kmh": float(np.sqrt(np.mean(err ** 2))),
         "aux_kwh": veh["aux_work_j"][-1] / J_PER_KWH,
     })
-    served, total = stops_served(veh, os.path.join(out, "stops.csv"))
+    served, total, pos_err = stops_served(veh, os.path.join(out, "stops.csv"))
     if total is not None:
         s["stops_served"], s["stops_total"] = served, total
+        s["stop_position_error_max_m"] = pos_err
     exh = data.get("/engine/exhaust")
     if exh is not None and "nox_mass_kg" in exh and args.get("engine", "map") == "1d":
         s["nox_engine_out_g"] = exh["nox_mass_kg"][-1] * 1000.0

@@ -1,6 +1,7 @@
 #include "cosim/recorder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "common/errors.hpp"
@@ -50,6 +51,11 @@ void Recorder::configure() {
   if (!pnh_.getParam("topics", topics) || topics.empty())
     throw InputError(where, "topics", "missing or empty list");
   std::sort(topics.begin(), topics.end());
+  double period_s = 0.0;
+  pnh_.param("record_period_s", period_s, 0.0);
+  if (!(period_s >= 0.0 && period_s <= 3600.0))
+    throw InputError(where, "record_period_s", "must be in [0, 3600] s");
+  period_ns_ = static_cast<uint64_t>(std::llround(period_s * 1e9));
   bag_ = std::make_unique<rosbag::Bag>();
   try {
     bag_->open(bag_file, rosbag::bagmode::Write);
@@ -61,6 +67,10 @@ void Recorder::configure() {
     topics_.push_back(in.get());
     addCustomInput(std::move(in));
   }
+}
+
+void Recorder::step(const ros::Time& t, double) {
+  if (period_ns_ == 0 || t.toNSec() % period_ns_ == 0) writeAt(t);
 }
 
 void Recorder::writeAt(const ros::Time& t) {

@@ -7,7 +7,9 @@
 // readable. Topics are recorded type-erased (topic_tools::ShapeShifter), so the recorder does not
 // depend on the message types.
 //
-// Parameters (private): bag_file [path], topics [list of topic names].
+// Parameters (private): bag_file [path], topics [list of topic names], record_period_s [s]
+// (0 = every macro step; otherwise the states stamped at multiples of the period are written,
+// always including t = 0 and the final state).
 #pragma once
 #include <rosbag/bag.h>
 #include <topic_tools/shape_shifter.h>
@@ -28,7 +30,7 @@ class Recorder : public Participant {
  protected:
   void configure() override;
   void publishOutputs(const ros::Time& t) override {}
-  void step(const ros::Time& t, double dt_s) override { writeAt(t); }
+  void step(const ros::Time& t, double dt_s) override;
   bool readyToClose(const ros::Time& t_end) const override;
   void close(const ros::Time& t_end, bool aborted) override;
 
@@ -38,6 +40,7 @@ class Recorder : public Participant {
   std::unique_ptr<rosbag::Bag> bag_;
   std::vector<RawInput*> topics_;  // sorted by name; owned by the participant base
   ros::Time last_written_;
+  uint64_t period_ns_ = 0;
   bool wrote_any_ = false;
 };
 

@@ -41,7 +41,7 @@ class Baseline(unittest.TestCase):
         cls.runs = {}
         for name, mode in (("nodes", "nodes"), ("nodes2", "nodes"), ("nodelets", "nodelets")):
             out = os.path.join(cls.tmp, name)
-            st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL)
+            st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL, record_period=0)
             cls.runs[name] = (out, st)
 
     def test_runs_complete(self):
