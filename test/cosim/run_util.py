@@ -57,11 +57,11 @@ def bag_messages(bag_path):
 
 
 def pid_of_node(proc, name, timeout_s=30.0):
-    """PID of the process started with __name:=<name> by the roslaunch `proc` (same session:
-    other runs on the machine are never touched)."""
+    """PID of the process started with __name:=<name> by the roslaunch `proc` (its direct
+    child: other runs on the machine are never touched)."""
     t0 = time.time()
     while time.time() - t0 < timeout_s:
-        r = subprocess.run(["pgrep", "-s", str(proc.pid), "-f", "__name:=%s( |$)" % name],
+        r = subprocess.run(["pgrep", "-P", str(proc.pid), "-f", "__name:=%s( |$)" % name],
                            capture_output=True, text=True)
         pids = [int(p) for p in r.stdout.split()]
         if pids:
