@@ -26,6 +26,16 @@ def start_launch(launch_file, out_dir, **args):
                                 start_new_session=True)
 
 
+def stop(proc):
+    """Ends a launched run (and its nodes) if it is still going: for test clean-up."""
+    if proc.poll() is None:
+        try:
+            os.killpg(proc.pid, signal.SIGINT)
+            proc.wait(timeout=20)
+        except (ProcessLookupError, subprocess.TimeoutExpired):
+            os.killpg(proc.pid, signal.SIGKILL)
+
+
 def wait(proc, timeout_s):
     try:
         return proc.wait(timeout=timeout_s)

@@ -59,6 +59,7 @@ class Protocol(unittest.TestCase):
     def test_killed_node_stops_run_within_2s(self):
         out = os.path.join(self.tmp, "kill")
         proc = run_util.start_launch(LAUNCH, out, step=0.001, until=1000.0, timeout=1.0)
+        self.addCleanup(run_util.stop, proc)
         pid = run_util.pid_of_node(proc, "mass_b")
         time.sleep(3.0)  # well into the run
         self.assertIsNone(proc.poll(), "run still going before the kill")
