@@ -28,7 +28,18 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
   r.T_em = c.T_em;
   const double wa = std::max(std::fabs(w), w_half);
   r.T_aux = c.P_aux * w / (wa * wa);
-  r.T_drag = gl_.drag(w) * smoothSign(w);
+  // Gearbox drag: with a gear engaged, the drag part of the loss map at the gearbox input speed
+  // (VECTO: the map applies at the gearbox input; in 1C that is the turbine, so the drag acts on
+  // the turbine side; locked and shifting: the input shaft turns with the crank). In neutral
+  // the forward clutch is open and the geartrain stands: only the pump-side spin loss
+  // (oil pump + open-clutch drag + free turbine) acts at the pump speed.
+  if (gs_.mode == DriveMode::Neutral) {
+    r.T_drag = p_.driveline.neutral_drag_torque_Nm * smoothSign(w);
+  } else if (gs_.mode == DriveMode::Converter) {
+    r.T_drag_in = gl_.drag(w_in) * smoothSign(w_in);
+  } else {
+    r.T_drag = gl_.drag(w) * smoothSign(w);
+  }
   if (gs_.mode != DriveMode::Neutral) {
     r.T_gload = p_.driveline.gear_load_loss_factor[g - 1] * gl_.load(w_in, T_in_est_) * smoothSign(w_in);
     r.T_axl = (1.0 - p_.driveline.axle_efficiency) * std::fabs(T_ax_est_) * smoothSign(w_out);
@@ -68,7 +79,7 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
         r.T_clutch = Tc;
       }
       r.dw = (T_crank - r.T_pump - r.T_clutch) / J_E_;
-      r.dv = (k_[1] * (r.T_turb + r.T_clutch - r.T_gload) - F_res) / (M_ + J_GI_ * k_[1] * k_[1]);
+      r.dv = (k_[1] * (r.T_turb + r.T_clutch - r.T_gload - r.T_drag_in) - F_res) / (M_ + J_GI_ * k_[1] * k_[1]);
       break;
     }
     default:
@@ -101,7 +112,7 @@ void VehicleModel::book(const Rates& r, double v0, double v2, double w0, double 
   e.engine_J += r.T_eng * wm * h;
   e.em_J += r.T_em * wm * h;
   e.aux_J += r.T_aux * wm * h;
-  e.gearbox_drag_J += r.T_drag * wm * h;
+  e.gearbox_drag_J += (r.T_drag * wm + r.T_drag_in * w_in) * h;
   e.tc_loss_J += (r.T_pump * wm - r.T_turb * w_in) * h;
   e.gear_load_loss_J += r.T_gload * w_in * h;
   e.retarder_J += r.T_ret * w_out * h;
@@ -126,6 +137,7 @@ void VehicleModel::substep(double h, const StepConst& c, int depth) {
     Rates m;
     m.T_eng = 0.5 * (a.T_eng + b.T_eng); m.T_em = 0.5 * (a.T_em + b.T_em);
     m.T_aux = 0.5 * (a.T_aux + b.T_aux); m.T_drag = 0.5 * (a.T_drag + b.T_drag);
+    m.T_drag_in = 0.5 * (a.T_drag_in + b.T_drag_in);
     m.T_pump = 0.5 * (a.T_pump + b.T_pump); m.T_turb = 0.5 * (a.T_turb + b.T_turb);
     m.T_gload = 0.5 * (a.T_gload + b.T_gload); m.T_ret = 0.5 * (a.T_ret + b.T_ret);
     m.T_axl = 0.5 * (a.T_axl + b.T_axl); m.F_roll = 0.5 * (a.F_roll + b.F_roll);

@@ -2,8 +2,11 @@
 //
 // Gearbox loss map L(ω_in, T_in) [Nm at the input shaft] on a full speed × torque grid
 // (bilinear, clamped at the grid edges, symmetric in the sign of T_in as in the source XML):
-//   drag part  L_0(ω)      = L(ω, 0)                    -> charged at the TC pump / engine
-//                                                          speed (AT oil pump + spin losses)
+//   drag part  L_0(ω)      = L(ω, 0)                    -> at the gearbox input speed with a
+//                                                          gear engaged (crank speed when
+//                                                          locked, turbine speed in 1C); not
+//                                                          in neutral (VehicleModel uses the
+//                                                          neutral spin loss there)
 //   load part  L_T(ω, T)   = f_g · (L(ω, |T|) - L(ω, 0))  -> at the gearbox input shaft;
 //                                                          f_g per gear (1 for mapped gears,
 //                                                          0 for direct gear 4: no mesh load)

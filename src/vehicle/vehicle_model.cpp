@@ -56,6 +56,8 @@ void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
   brake_force_ = accel_pedal_ = idle_integral_ = 0.0;
   hold_ = start_request_ = locking_ = false;
   last_dv_ = 0.0;
+  s_target_ = s_;
+  v_target_prev_ = v_;
   driver_.reset();
   if (gear == 0) {
     gs_ = {DriveMode::Neutral, 0};
@@ -175,14 +177,34 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   if (limit > 0.0) T_max = std::min(T_max, std::max(T_min, limit / mu));
   if (locked) M_eff += (J_E_ + J_GI_) * k * k;
   else M_eff += J_GI_ * k * k;
-  F_min = k * (mu * (T_min - T_loss_crank) - r.T_gload) - F_drag_out;
-  F_max = k * (mu * (T_max - T_loss_crank) - r.T_gload) - F_drag_out;
-  const double F_ff = M_eff * in.target_accel_m_s2 + road_.rolling(grade) +
-                      road_.aero(v_, c.rho) + road_.gradeForce(grade);
+  // Torque at zero accelerator (pedal 0 = this, pedal 1 = T_max). Locked: the motoring torque
+  // (overrun). Converter (and neutral, about to engage 1C): the idle governor keeps the engine
+  // at idle against aux + pump torque, so the least force the driveline gives is the creep
+  // force of the converter at idle, not the motoring torque multiplied by mu (the engine cannot
+  // be pulled below idle through an open converter).
+  double T_floor = T_min;
+  const double T_side = r.T_gload + r.T_drag_in;  // input-shaft losses
+  F_max = k * (mu * (T_max - T_loss_crank) - T_side) - F_drag_out;
+  if (locked) {
+    F_min = k * (mu * (T_min - T_loss_crank) - T_side) - F_drag_out;
+  } else {
+    const double w_i = d.idle_speed_rad_s, w_t = v_ * k_[1];
+    const double T_idle = c.P_aux / w_i + r.T_drag - in.em_torque_Nm + tc_.pumpTorque(w_i, w_t);
+    if (gs_.mode == DriveMode::Converter) T_floor = std::clamp(T_idle, T_min, T_max);
+    F_min = k * (tc_.turbineTorque(w_i, w_t) - T_side) - F_drag_out;
+    F_max = std::max(F_max, F_min);
+  }
+  const double F_road = road_.rolling(grade) + road_.aero(v_, c.rho) + road_.gradeForce(grade);
+  const double F_ff = M_eff * in.target_accel_m_s2 + F_road;
+  const double F_stop = -M_eff * p_.driver.stop_decel_m_s2 + F_road;
 
   double accel = 0.0;
+  // Distance reference: trapezoidal integral of the targets (exact for a target linear in t).
+  s_target_ += 0.5 * (v_target_prev_ + in.target_speed_m_s) * dt;
+  v_target_prev_ = in.target_speed_m_s;
   if (in.driver_enabled) {
-    const DriverCommand cmd = driver_.update(dt, v_, in.target_speed_m_s, F_ff, F_min, F_max);
+    const DriverCommand cmd = driver_.update(dt, v_, in.target_speed_m_s, F_ff, F_min, F_max,
+                                             F_stop, s_target_ - s_);
     accel = cmd.accel_pedal;
     brake_force_ = cmd.brake_force_N;
     hold_ = cmd.hold;
@@ -190,12 +212,13 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
     out_.brake_pedal = cmd.brake_pedal;
   } else {
     driver_.reset();
+    s_target_ = s_;  // open loop: the reference restarts from the bus position
     accel = std::clamp(in.accel_pedal_cmd, 0.0, 1.0);
     brake_force_ = std::clamp(in.brake_pedal_cmd, 0.0, 1.0) * F_brake_max_;
     out_.brake_pedal = std::clamp(in.brake_pedal_cmd, 0.0, 1.0);
   }
   accel_pedal_ = accel;
-  const double T_driver = T_min + accel * (T_max - T_min);
+  const double T_driver = T_floor + accel * (T_max - T_floor);
 
   // Idle governor: PI on (ω_idle - ω_e) with the present load as feed-forward; acts as a floor
   // under the driver's demand (integrates only while it is the active demand).

@@ -5,15 +5,18 @@
 // Bodies: crank (J_E = engine + TC pump inertia, speed ω_e), gearbox input (J_GI = turbine +
 // input shaft, speed ω_in), vehicle (M = m + Σ J_wheel/r², speed v). k_g = i_g i_a / r [1/m].
 // Torques at the crank: engine brake torque T_e (input, from the engine one exchange late),
-// e-machine T_em (input), aux T_aux = P_aux ω_e/max(ω_e, ω_idle/2)², gearbox drag T_d(ω_e).
+// e-machine T_em (input), aux T_aux = P_aux ω_e/max(ω_e, ω_idle/2)², gearbox drag T_d: the
+// loss map's drag L(ω, 0) at the crank when locked/shifting, on the turbine side at ω_t in 1C
+// (T_d,in), and only the neutral spin loss T_N (neutral_drag_torque_Nm) at ω_e in neutral.
 // Gearbox load loss T_gl at ω_in, retarder T_r and axle loss T_ax = (1-η_a)|T_axle,in| at the
 // gearbox output ω_out = v i_a/r. Road: F_road = F_roll + F_aero + F_grade; brake F_b.
 //
 //   locked gL:  (M + (J_E+J_GI) k_g²) dv/dt = k_g (T_e + T_em - T_aux - T_d - T_gl)
 //                                             - (i_a/r)(T_r + T_ax) - F_road - F_b,  ω_e = k_g v
 //   1C (TC):    J_E dω_e/dt = T_e + T_em - T_aux - T_d - T_p(ω_e, ω_in)
-//               (M + J_GI k_1²) dv/dt = k_1 (T_t - T_gl) - (i_a/r)(T_r + T_ax) - F_road - F_b
-//   neutral:    (J_E + J_GI) dω_e/dt = T_e + T_em - T_aux - T_d;   M dv/dt = -(i_a/r) T_r - F_road
+//               (M + J_GI k_1²) dv/dt = k_1 (T_t - T_gl - T_d,in) - (i_a/r)(T_r + T_ax) - F_road - F_b
+//               (T_d = 0 on the crank in 1C)
+//   neutral:    (J_E + J_GI) dω_e/dt = T_e + T_em - T_aux - T_N;   M dv/dt = -(i_a/r) T_r - F_road
 //   gear change g -> h (slip phase, shift_duration_s = t_s > 0; the engine and gearbox input
 //   turn at ω_e, the on-coming clutch transmits T_c into gear h):
 //               (J_E+J_GI) dω_e/dt = T_e + T_em - T_aux - T_d - T_c
@@ -42,7 +45,10 @@
 // Macro-step timing (lock-step co-simulation, exchange every Δt): step(Δt, in) uses the engine
 // torque of the previous exchange, integrates [t, t+Δt], then evaluates the driver and the idle
 // governor at t+Δt against in.target_speed_m_s (the target for t+Δt) and outputs the imposed
-// engine speed ω_e(t+Δt) and the engine torque request for the next engine step.
+// engine speed ω_e(t+Δt) and the engine torque request for the next engine step. The model
+// integrates the targets into s_target (trapezoid) for the driver's distance error.
+// Accelerator pedal a → crank torque T_floor + a (T_max - T_floor): T_floor = motoring torque
+// when locked, the idle-holding torque (aux + T_p(ω_idle, ω_t)) in 1C.
 #pragma once
 #include <string>
 
@@ -139,6 +145,7 @@ class VehicleModel {
   };
   struct Rates {
     double T_eng = 0, T_em = 0, T_aux = 0, T_drag = 0, T_pump = 0, T_turb = 0, T_gload = 0;
+    double T_drag_in = 0;  // gearbox drag on the input (turbine) shaft in 1C
     double T_ret = 0, T_axl = 0, F_roll = 0, F_aero = 0, F_grade = 0, F_brake = 0;
     double T_clutch = 0;  // on-coming clutch torque during a gear change
     double dw = 0, dv = 0;
@@ -173,6 +180,7 @@ class VehicleModel {
   double brake_force_ = 0.0, accel_pedal_ = 0.0, idle_integral_ = 0.0;
   bool hold_ = false, start_request_ = false;
   double last_dv_ = 0.0;
+  double s_target_ = 0.0, v_target_prev_ = 0.0;  // ∫ v_target dt (driver's distance reference)
   double shift_slip0_ = 0.0, shift_elapsed_ = 0.0;  // slip phase of a gear change / lock-up
   bool locking_ = false;                            // lock-up clutch slipping (in 1C)
   VehicleOutputs out_;

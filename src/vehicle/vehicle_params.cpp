@@ -37,6 +37,7 @@ void VehicleParams::declare(ParamSet& ps) {
   ps.add("tc_pump_inertia_kg_m2", d.tc_pump_inertia_kg_m2, "kg m^2", 0.0, 10.0, "TC pump side");
   ps.add("gearbox_input_inertia_kg_m2", d.gearbox_input_inertia_kg_m2, "kg m^2", 0.0, 10.0, "turbine + input");
   ps.add("idle_speed_rad_s", d.idle_speed_rad_s, "rad/s", 30.0, 150.0, "engine idle speed");
+  ps.add("neutral_drag_torque_Nm", d.neutral_drag_torque_Nm, "Nm", 0.0, 100.0, "AT spin loss in neutral at pump speed");
 
   ShiftParams& s = shift;
   ps.setPrefix("shift/");
@@ -63,6 +64,8 @@ void VehicleParams::declare(ParamSet& ps) {
   ps.add("stop_target_speed_m_s", r.stop_target_speed_m_s, "m/s", 0.0, 1.0, "");
   ps.add("hold_speed_m_s", r.hold_speed_m_s, "m/s", 0.0, 3.0, "");
   ps.add("hold_brake_fraction", r.hold_brake_fraction, "-", 0.0, 1.0, "");
+  ps.add("stop_decel_m_s2", r.stop_decel_m_s2, "m/s^2", 0.1, 5.0, "braking to standstill at a stop");
+  ps.add("max_distance_error_m", r.max_distance_error_m, "m", 0.0, 100.0, "saturation of the distance error = PI integral");
   ps.add("idle_kp_Nm_s", r.idle_kp_Nm_s, "Nm s/rad", 0.0, 500.0, "idle governor P");
   ps.add("idle_ki_Nm", r.idle_ki_Nm, "Nm/rad", 0.0, 2000.0, "idle governor I");
 

@@ -43,6 +43,7 @@ struct DrivelineParams {
   double tc_pump_inertia_kg_m2 = 0.5;     // VECTO AT-TC demo TC inertia, on the pump side
   double gearbox_input_inertia_kg_m2 = 0.3;  // turbine + input shaft + sets (assumption)
   double idle_speed_rad_s = units::rpmToRadps(700.0);  // P31 XML idling speed
+  double neutral_drag_torque_Nm = 12.0;   // AT spin loss in neutral at the pump (estimate)
 };
 
 struct ShiftParams {
@@ -64,11 +65,13 @@ struct ShiftParams {
 
 struct DriverParams {
   double kp_per_s = 1.0;                  // speed PI: ΔF = m (kp e + ki ∫e)
-  double ki_per_s2 = 0.3;
+  double ki_per_s2 = 0.3;                 // on the distance error e_s = ∫e dt
   double max_brake_decel_m_s2 = 5.0;      // F_brake,max = m_total · this (UN R13 M3 ≥ 5 m/s²)
   double stop_target_speed_m_s = 0.01;    // target below this = stop requested
   double hold_speed_m_s = 0.5;            // stop requested and v below this: hold brake
   double hold_brake_fraction = 0.3;       // hold brake pedal [-]
+  double stop_decel_m_s2 = 1.5;           // braking to standstill once the target is at rest
+  double max_distance_error_m = 2.0;      // saturation of the distance error (PI state) [m]
   double idle_kp_Nm_s = 25.0;             // idle governor PI on ω_idle - ω_e
   double idle_ki_Nm = 60.0;
 };

@@ -3,6 +3,7 @@
 // outputs of the previous exchange). Used by the vehicle_accel tool and the coupled tests.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "engine_map/map_engine.hpp"
 #include "vehicle/vehicle_model.hpp"
@@ -14,6 +15,11 @@ class CoupledSim {
   CoupledSim(const VehicleParams& vp, const engine_map::MapEngineParams& ep,
              const std::string& base_dir = "")
       : veh_(vp, base_dir), eng_(ep, base_dir) {}
+
+  /// Road grade (rise/run) vs the bus's own distance [m] (as the ROS vehicle participant).
+  void setGradeProfile(const std::vector<double>& distance_m, const std::vector<double>& grade) {
+    veh_.setGradeProfile(distance_m, grade);
+  }
 
   /// Bus at speed v [m/s] in `gear` (0 = neutral) with the engine at idle (or k_g v).
   void reset(double v_m_s, int gear, double ambient_T_K = 293.15) {
