@@ -4,6 +4,8 @@
   scripts/twin bench [map]          baseline_urban, map engine, full mission, mode nodes and
                                     nodelets: wall/simulated ratio, distance, fuel, per-node CPU
   scripts/twin bench map --until S  the same on the first S seconds only
+  scripts/twin bench 1d [--until S]  map engine vs 1D engine (FSM), nodelets: wall/simulated,
+                                    engine CPU/simulated, fuel, NOx, torque traces compared
 Results: printed as a table and written to results/bench/<name>.json.
 """
 import argparse
@@ -61,12 +63,43 @@ def bench_map(a):
     return 0 if len(rows) == 2 else 1
 
 
+def bench_1d(a):
+    """Full mission with the 1D engine (FSM) against the map engine, same machine, nodelets."""
+    rows = []
+    outs = {}
+    for engine in ("map", "1d"):
+        out = os.path.join(REPO, "results", "bench", "engine_%s" % engine)
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+        args = ["mode:=nodelets", "ambient:=25", "engine:=" + engine, "timeout:=10"]
+        if a.until:
+            args.append("until:=%g" % a.until)
+        s = run_scenario("baseline_urban", out, args)
+        if s:
+            rows.append((engine, s))
+            outs[engine] = out
+    print("\nbaseline_urban, ambient 25 C, mode nodelets: map engine vs 1D engine (FSM)")
+    print("| engine | sim time [s] | wall/sim | engine CPU/sim | distance [km] | fuel [kg] | fuel [L/100km] | NOx engine-out [g] |")
+    print("|---|---|---|---|---|---|---|---|")
+    for engine, s in rows:
+        print("| %s | %.1f | %.4f | %.4f | %.3f | %.3f | %.2f | %s |" % (
+            engine, s["sim_time_s"], s["wall_time_s"] / s["sim_time_s"],
+            s["cpu_time_s"].get("engine", float("nan")) / s["sim_time_s"], s.get("distance_km", float("nan")),
+            s.get("fuel_kg", float("nan")), s.get("fuel_l_per_100km", float("nan")),
+            "%.1f" % s["nox_engine_out_g"] if "nox_engine_out_g" in s else "-"))
+    if len(outs) == 2:
+        subprocess.call([sys.executable, os.path.join(REPO, "scripts", "compare_engines.py"),
+                         outs["map"], outs["1d"], "--from", "40", "--to", "120"])
+    with open(os.path.join(REPO, "results", "bench", "engine.json"), "w") as f:
+        json.dump(dict(rows), f, indent=2)
+    return 0 if len(rows) == 2 else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("what", nargs="?", default="map", choices=["map"])
+    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d"])
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     a = ap.parse_args()
-    return bench_map(a)
+    return bench_map(a) if a.what == "map" else bench_1d(a)
 
 
 if __name__ == "__main__":

@@ -68,6 +68,8 @@ def main():
     for k, d in runs.items():
         with open(os.path.join(d, "summary.json")) as f:
             s = json.load(f)
+        if not s.get("sim_time_s"):
+            sys.exit("compare_engines: the %s run in %s did not simulate anything (see its status.json)" % (k, d))
         rows.append((k, s))
     print("| engine | sim time [s] | wall/sim | fuel [kg] | fuel [L/100km] | NOx engine-out [g] |")
     print("|---|---|---|---|---|---|")
