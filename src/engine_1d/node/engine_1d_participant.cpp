@@ -1,9 +1,5 @@
 #include "engine_1d/node/engine_1d_participant.hpp"
 
-#include <hybrid_bus_twin/EngineHeat.h>
-#include <hybrid_bus_twin/EngineState.h>
-#include <hybrid_bus_twin/ExhaustState.h>
-
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "cosim/param_loader.hpp"
@@ -29,9 +25,9 @@ void Engine1DParticipant::configure() {
   speed_rad_s_ = units::rpmToRadps(700.0);
   engine_->reset(speed_rad_s_, 0.0, ambient_T_K_, 101325.0, coolant_T_K_);
   command_ = &addInput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
-  state_pub_ = addOutput<hybrid_bus_twin::EngineState>("/engine/state");
-  exhaust_pub_ = addOutput<hybrid_bus_twin::ExhaustState>("/engine/exhaust");
-  heat_pub_ = addOutput<hybrid_bus_twin::EngineHeat>("/engine/heat");
+  ports_ = cosim::EnginePorts(addOutput<hybrid_bus_twin::EngineState>("/engine/state"),
+                              addOutput<hybrid_bus_twin::ExhaustState>("/engine/exhaust"),
+                              addOutput<hybrid_bus_twin::EngineHeat>("/engine/heat"));
 }
 
 void Engine1DParticipant::step(const ros::Time& t, double dt_s) {
@@ -52,39 +48,29 @@ void Engine1DParticipant::step(const ros::Time& t, double dt_s) {
 
 void Engine1DParticipant::publishOutputs(const ros::Time& t) {
   const Engine1DOutputs& o = engine_->outputs();
-  hybrid_bus_twin::EngineState s;
-  s.header.stamp = t;
-  s.engine_speed_rad_s = speed_rad_s_;
-  s.brake_torque_nm = o.brake_torque_Nm;
-  s.torque_max_nm = engine_->fullLoadTorque(speed_rad_s_);
-  s.torque_min_nm = engine_->motoringTorque(speed_rad_s_);
-  s.fuel_mass_flow_kg_s = o.fuel_mass_flow_kg_s;
-  s.fuel_mass_kg = o.fuel_mass_kg;
-  s.positive_work_j = positive_work_J_;
-  s.motoring_work_j = motoring_work_J_;
-  s.boost_pressure_pa = o.boost_pressure_Pa;
-  s.turbo_speed_rad_s = o.turbo_speed_rad_s;
-  s.lambda = o.lambda;
-  s.cpu_time_s = o.cpu_time_s;
-  state_pub_.publish(s);
-
-  hybrid_bus_twin::ExhaustState x;
-  x.header.stamp = t;
-  x.mass_flow_kg_s = o.exhaust_mass_flow_kg_s;
-  x.temperature_k = o.exhaust_T_K > 0.0 ? o.exhaust_T_K : ambient_T_K_;
-  x.y_o2 = o.exhaust.y_O2;
-  x.y_co2 = o.exhaust.y_CO2;
-  x.y_h2o = o.exhaust.y_H2O;
-  x.y_n2 = o.exhaust.y_N2;
-  x.nox_mass_flow_kg_s = o.nox_mass_flow_kg_s;
-  x.nox_mass_kg = o.nox_mass_kg;
-  exhaust_pub_.publish(x);
-
-  hybrid_bus_twin::EngineHeat h;
-  h.header.stamp = t;
-  h.heat_to_coolant_w = o.coolant_heat_W;
-  h.coolant_pump_speed_rad_s = speed_rad_s_;  // mechanical pump driven 1:1 by the crank
-  heat_pub_.publish(h);
+  cosim::EnginePortValues v;
+  v.speed_rad_s = speed_rad_s_;
+  v.brake_torque_Nm = o.brake_torque_Nm;
+  v.max_torque_Nm = engine_->fullLoadTorque(speed_rad_s_);
+  v.min_torque_Nm = engine_->motoringTorque(speed_rad_s_);
+  v.fuel_mass_flow_kg_s = o.fuel_mass_flow_kg_s;
+  v.fuel_mass_kg = o.fuel_mass_kg;
+  v.positive_work_J = positive_work_J_;
+  v.motoring_work_J = motoring_work_J_;
+  v.boost_pressure_Pa = o.boost_pressure_Pa;
+  v.turbo_speed_rad_s = o.turbo_speed_rad_s;
+  v.lambda = o.lambda;
+  v.cpu_time_s = o.cpu_time_s;
+  v.exhaust_mass_flow_kg_s = o.exhaust_mass_flow_kg_s;
+  v.exhaust_T_K = o.exhaust_T_K > 0.0 ? o.exhaust_T_K : ambient_T_K_;
+  v.y_O2 = o.exhaust.y_O2;
+  v.y_CO2 = o.exhaust.y_CO2;
+  v.y_H2O = o.exhaust.y_H2O;
+  v.y_N2 = o.exhaust.y_N2;
+  v.nox_mass_flow_kg_s = o.nox_mass_flow_kg_s;
+  v.nox_mass_kg = o.nox_mass_kg;
+  v.heat_to_coolant_W = o.coolant_heat_W;
+  ports_.publish(t, v);
 }
 
 }  // namespace hbt::engine1d

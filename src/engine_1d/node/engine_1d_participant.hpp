@@ -13,6 +13,7 @@
 
 #include <memory>
 
+#include "cosim/engine_ports.hpp"
 #include "cosim/participant.hpp"
 #include "engine_1d/engine_1d.hpp"
 
@@ -30,7 +31,7 @@ class Engine1DParticipant : public cosim::Participant {
  private:
   std::unique_ptr<Engine1D> engine_;
   cosim::Input<hybrid_bus_twin::EngineCommand>* command_ = nullptr;
-  ros::Publisher state_pub_, exhaust_pub_, heat_pub_;
+  cosim::EnginePorts ports_;
   double speed_rad_s_ = 0.0, ambient_T_K_ = 298.15, coolant_T_K_ = 363.15;
   double positive_work_J_ = 0.0, motoring_work_J_ = 0.0;
 };

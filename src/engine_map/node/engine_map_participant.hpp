@@ -10,6 +10,7 @@
 
 #include <memory>
 
+#include "cosim/engine_ports.hpp"
 #include "cosim/participant.hpp"
 #include "engine_map/map_engine.hpp"
 
@@ -27,7 +28,7 @@ class EngineMapParticipant : public cosim::Participant {
  private:
   std::unique_ptr<MapEngine> engine_;
   cosim::Input<hybrid_bus_twin::EngineCommand>* command_ = nullptr;
-  ros::Publisher state_pub_, exhaust_pub_, heat_pub_;
+  cosim::EnginePorts ports_;
   double speed_rad_s_ = 0.0, ambient_T_K_ = 298.15, last_cpu_s_ = 0.0;
 };
 

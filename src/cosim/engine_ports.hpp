@@ -1,0 +1,67 @@
+// The engine's outputs as messages, shared by every engine model's participant (map and 1D):
+// one place that fills EngineState, ExhaustState and EngineHeat from model-neutral values (SI).
+#pragma once
+#include <hybrid_bus_twin/EngineHeat.h>
+#include <hybrid_bus_twin/EngineState.h>
+#include <hybrid_bus_twin/ExhaustState.h>
+#include <ros/ros.h>
+
+namespace hbt::cosim {
+
+struct EnginePortValues {
+  double speed_rad_s = 0, brake_torque_Nm = 0, max_torque_Nm = 0, min_torque_Nm = 0;
+  double fuel_mass_flow_kg_s = 0, fuel_mass_kg = 0;             // [kg/s], cumulative [kg]
+  double positive_work_J = 0, motoring_work_J = 0;              // cumulative [J]
+  double boost_pressure_Pa = 0, turbo_speed_rad_s = 0, lambda = 0, cpu_time_s = 0;
+  double exhaust_mass_flow_kg_s = 0, exhaust_T_K = 0;           // turbine outlet
+  double y_O2 = 0, y_CO2 = 0, y_H2O = 0, y_N2 = 0;              // mass fractions [-]
+  double nox_mass_flow_kg_s = 0, nox_mass_kg = 0;               // as NO2
+  double heat_to_coolant_W = 0;
+};
+
+/// Publishers of /engine/state, /engine/exhaust, /engine/heat (advertised by the participant
+/// through Participant::addOutput so that the step protocol knows them).
+class EnginePorts {
+ public:
+  EnginePorts() = default;
+  EnginePorts(ros::Publisher state, ros::Publisher exhaust, ros::Publisher heat)
+      : state_(std::move(state)), exhaust_(std::move(exhaust)), heat_(std::move(heat)) {}
+  void publish(const ros::Time& t, const EnginePortValues& v) const {
+    hybrid_bus_twin::EngineState s;
+    s.header.stamp = t;
+    s.engine_speed_rad_s = v.speed_rad_s;
+    s.brake_torque_nm = v.brake_torque_Nm;
+    s.torque_max_nm = v.max_torque_Nm;
+    s.torque_min_nm = v.min_torque_Nm;
+    s.fuel_mass_flow_kg_s = v.fuel_mass_flow_kg_s;
+    s.fuel_mass_kg = v.fuel_mass_kg;
+    s.positive_work_j = v.positive_work_J;
+    s.motoring_work_j = v.motoring_work_J;
+    s.boost_pressure_pa = v.boost_pressure_Pa;
+    s.turbo_speed_rad_s = v.turbo_speed_rad_s;
+    s.lambda = v.lambda;
+    s.cpu_time_s = v.cpu_time_s;
+    state_.publish(s);
+    hybrid_bus_twin::ExhaustState x;
+    x.header.stamp = t;
+    x.mass_flow_kg_s = v.exhaust_mass_flow_kg_s;
+    x.temperature_k = v.exhaust_T_K;
+    x.y_o2 = v.y_O2;
+    x.y_co2 = v.y_CO2;
+    x.y_h2o = v.y_H2O;
+    x.y_n2 = v.y_N2;
+    x.nox_mass_flow_kg_s = v.nox_mass_flow_kg_s;
+    x.nox_mass_kg = v.nox_mass_kg;
+    exhaust_.publish(x);
+    hybrid_bus_twin::EngineHeat h;
+    h.header.stamp = t;
+    h.heat_to_coolant_w = v.heat_to_coolant_W;
+    h.coolant_pump_speed_rad_s = v.speed_rad_s;  // mechanical pump driven 1:1 by the crank
+    heat_.publish(h);
+  }
+
+ private:
+  ros::Publisher state_, exhaust_, heat_;
+};
+
+}  // namespace hbt::cosim
