@@ -209,8 +209,8 @@ void EngineAssembly::coupledStep(double dt, double omega) {
   comp_->setSpeed(wtc);
   turb_[0]->setSpeed(wtc);
   turb_[1]->setSpeed(wtc);
-  intake_.advance(dt);
-  exhaust_.advance(dt);
+  intake_.step(dt);  // dt <= both networks' stable steps (advance() checked them)
+  exhaust_.step(dt);
 
   std::array<double, kNumChannels> x{};
   double work = 0.0, wall = 0.0, fuel = 0.0, nox = 0.0;

@@ -19,23 +19,26 @@ double closedFacePressure(const PerfectGas& g, const EndState& s) {
 }
 
 FaceState closedFace(const PerfectGas& g, const EndState& s) {
-  const Wave w(g, s);
-  return {w.density(0.0), 0.0, w.pressure(0.0)};
+  return Wave(g, s).atRest();
 }
 
 FaceState reservoirFace(const PerfectGas& gas, const EndState& s, double p0, double T0) {
   const Wave w(gas, s);
-  // outflow at static p0?
-  const double ub = w.velocityAt(p0);
+  // outflow at static p0?  (a = (p0/p)^(1/ik) = base(ub): the face is at p0 unless choked)
+  const double a = std::pow(p0 / w.p, 1.0 / w.ik);
+  const double ub = w.u + w.c / w.g * (a - 1.0);
   if (ub <= 0.0) {
     const double ws = w.wSonic();
-    return outflowFace(w, std::min(-ub, ws));
+    if (-ub <= ws) {
+      const double ag = std::pow(a, 1.0 / w.g);
+      return {w.rho * ag, ub, w.p * ag * a * a};
+    }
+    return outflowFace(w, ws);
   }
   // inflow: pipe simple wave p_b(u_b) = reservoir isentrope p0 (1 - u_b^2/(2 cp T0))^(gamma/(gamma-1));
   // raised to the power (gamma-1)/(2 gamma) both sides are linear / square-root in u_b:
   //   B + G u_b = a sqrt(1 - D u_b^2),  B = 1 - g u_in/c, G = g/c, a = (p0/p)^((gamma-1)/(2 gamma))
   const double B = 1.0 - w.g * w.u / w.c, G = w.g / w.c, D = 1.0 / (2.0 * gas.cp() * T0);
-  const double a = std::pow(p0 / w.p, 1.0 / w.ik);
   const double qa = G * G + a * a * D;
   const double disc = B * B * G * G - qa * (B * B - a * a);
   double u = disc > 0.0 ? (-B * G + std::sqrt(disc)) / qa : 0.0;

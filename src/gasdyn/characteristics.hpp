@@ -60,8 +60,27 @@ struct Wave {
   double pressure(double ub) const { return p * std::pow(base(ub), ik); }
   double density(double ub) const { return rho * std::pow(base(ub), 1.0 / g); }  // same entropy
   double wSonic() const { return std::max((c - g * u) / (1.0 + g), 0.0); }       // sonic outflow
+  /// Outflow at speed wo >= 0: mass flow out of the pipe [kg/s] and the face total state (p0 [Pa],
+  /// T0 [K]) with two pow() calls: the face keeps the end-cell entropy, so T_b = T b^2
+  /// (b = base(-wo)) and p0 = p_b (T0/T_b)^(gamma/(gamma-1)) = p (T0/T)^(gamma/(gamma-1)).
+  /// Same values as outflow(wo) + stagnation() (3 pow() calls).
+  double outflowTotal(double wo, double cp, double R, double& p0, double& T0) const {
+    const double b = base(-wo), T = p / (rho * R);
+    T0 = T * b * b + 0.5 * wo * wo / cp;
+    p0 = p * std::pow(T0 / T, 0.5 * ik);
+    return rho * std::pow(b, 1.0 / g) * wo * A;
+  }
   double velocityAt(double pt) const { return u + c / g * (std::pow(pt / p, 1.0 / ik) - 1.0); }
-  FaceState outflow(double w) const { return {density(-w), -w, pressure(-w)}; }
+  /// Face state of the outflow at speed w >= 0 (one pow(): b^ik = b^(1/g) b^2).
+  FaceState outflow(double w) const {
+    const double b = base(-w), bg = std::pow(b, 1.0 / g);
+    return {rho * bg, -w, p * bg * b * b};
+  }
+  /// Face at rest (u_b = 0), same relation.
+  FaceState atRest() const {
+    const double b = base(0.0), bg = std::pow(b, 1.0 / g);
+    return {rho * bg, 0.0, p * bg * b * b};
+  }
   FaceState inflow(const PerfectGas& gas, double ub, double T0) const {
     const double Tb = std::max(T0 - ub * ub / (2.0 * gas.cp()), 1e-6 * T0);
     const double pb = pressure(ub);
@@ -71,7 +90,7 @@ struct Wave {
 
 /// Root of f increasing on [lo, hi] with f(lo) < 0 < f(hi) (Illinois / modified regula falsi).
 template <class F>
-double illinois(F f, double lo, double hi, double flo, double fhi) {
+double illinois(F f, double lo, double hi, double flo, double fhi, double rtol = 1e-13) {
   int side = 0;
   double x = lo;
   for (int it = 0; it < 60; ++it) {
@@ -88,7 +107,7 @@ double illinois(F f, double lo, double hi, double flo, double fhi) {
       if (side == 1) flo *= 0.5;
       side = 1;
     }
-    if (hi - lo <= 1e-13 * (std::abs(hi) + std::abs(lo)) + 1e-300) break;
+    if (hi - lo <= rtol * (std::abs(hi) + std::abs(lo)) + 1e-300) break;
   }
   return x;
 }
@@ -99,11 +118,11 @@ double illinois(F f, double lo, double hi, double flo, double fhi) {
 template <class Demand>
 FaceState demandOutflowFace(const PerfectGas& gas, const EndState& s, Demand demand) {
   const detail::Wave w(gas, s);
+  const double cp = gas.cp(), R = gas.R;
   auto f = [&](double wo) {
-    const FaceState fs = w.outflow(wo);
     double p0, T0;
-    stagnation(gas, fs, p0, T0);
-    return -fs.mdot_in(w.A) - demand(p0, T0);
+    const double m = w.outflowTotal(wo, cp, R, p0, T0);
+    return m - demand(p0, T0);
   };
   const double ws = w.wSonic();
   const double f0 = f(0.0);
@@ -131,6 +150,102 @@ FaceState demandInflowFace(const PerfectGas& gas, const EndState& s, Demand dema
   const double fhi = f(us);
   if (fhi <= 0.0) return face(us);  // sonic face
   return face(detail::illinois(f, 0.0, us, f0, fhi));
+}
+
+// --- Warm-started variants for boundaries evaluated every time step ---------------------------
+// Same equations and root semantics as demandOutflowFace / demandInflowFace (f increasing on
+// [0, hi]: f(0) >= 0 -> no flow, f(hi) <= 0 -> sonic face, else the root). The face state changes
+// little from one step to the next, so a secant iteration starts from the previous step's face
+// velocity (`guess`, kept by the caller) and stops at |dx| <= 1e-9 hi, usually after 2-3
+// evaluations of the demand instead of the 10-15 of the cold bracketing solver. Every evaluated
+// point narrows a bracket; if the secant leaves it (or needs more than 6 evaluations) the missing
+// end values are evaluated and the Illinois solver finishes on that bracket (same tolerance).
+namespace detail {
+template <class F>
+double warmRoot(F f, double hi, double guess) {
+  const double tol = 1e-9 * hi;
+  double a = 0.0, b = hi, fa = 0.0, fb = 0.0;
+  bool has_a = false, has_b = false;
+  auto take = [&](double x, double fx) {
+    if (fx < 0.0) a = x, fa = fx, has_a = true;
+    else b = x, fb = fx, has_b = true;
+  };
+  if (guess > 0.0 && guess < hi) {
+    double x0 = guess, f0 = f(x0);
+    if (f0 == 0.0) return x0;
+    take(x0, f0);
+    double x1 = f0 > 0.0 ? 0.98 * x0 : std::fmin(1.02 * x0, 0.5 * (x0 + hi));
+    double f1 = f(x1);
+    if (f1 == 0.0) return x1;
+    take(x1, f1);
+    for (int it = 0; it < 4; ++it) {
+      if (f1 == f0) break;
+      const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+      if (!(x2 > a && x2 < b)) break;
+      if (std::fabs(x2 - x1) <= tol) return x2;
+      x0 = x1, f0 = f1, x1 = x2, f1 = f(x1);
+      if (f1 == 0.0) return x1;
+      take(x1, f1);
+    }
+  }
+  if (!has_a) {  // lower end still 0
+    fa = f(0.0);
+    if (fa >= 0.0) return 0.0;
+  }
+  if (!has_b) {  // upper end still the sonic bound
+    fb = f(hi);
+    if (fb <= 0.0) return hi;
+  }
+  return illinois(f, a, b, fa, fb, 0.5e-9);
+}
+}  // namespace detail
+
+/// demandOutflowFace with a warm start; `guess` [m/s] = outflow speed of the last call (in/out).
+template <class Demand>
+FaceState warmDemandOutflowFace(const PerfectGas& gas, const EndState& s, Demand demand,
+                                double& guess) {
+  const detail::Wave w(gas, s);
+  const double cp = gas.cp(), R = gas.R;
+  auto f = [&](double wo) {
+    double p0, T0;
+    const double m = w.outflowTotal(wo, cp, R, p0, T0);
+    return m - demand(p0, T0);
+  };
+  const double ws = w.wSonic();
+  double x;
+  if (guess >= ws && ws > 0.0 && f(ws) <= 0.0)  // still choked
+    x = ws;
+  else
+    x = detail::warmRoot(f, ws, guess);
+  guess = x;
+  return w.outflow(x);
+}
+
+/// demandInflowFace with a warm start; `guess` [m/s] = face velocity of the last call (in/out).
+/// The sonic bound is taken at the supply temperature of the guess; a face that would be sonic
+/// or closed is handed to demandInflowFace (its own sonic bound).
+template <class Demand>
+FaceState warmDemandInflowFace(const PerfectGas& gas, const EndState& s, Demand demand,
+                               double& guess) {
+  const detail::Wave w(gas, s);
+  auto f = [&](double ub) {
+    const Supply d = demand(w.pressure(ub));
+    return w.inflow(gas, ub, d.T0).mdot_in(w.A) - d.mdot;
+  };
+  if (guess > 0.0) {
+    const double T0 = demand(w.pressure(guess)).T0;
+    const double us = std::sqrt(2.0 * gas.gamma * gas.R * T0 / (gas.gamma + 1.0));
+    if (guess < us) {
+      const double x = detail::warmRoot(f, us, guess);
+      if (x > 0.0 && x < us) {
+        guess = x;
+        return w.inflow(gas, x, demand(w.pressure(x)).T0);
+      }
+    }
+  }
+  const FaceState fs = demandInflowFace(gas, s, demand);
+  guess = fs.u_in;
+  return fs;
 }
 
 }  // namespace hbt::gasdyn

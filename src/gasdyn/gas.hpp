@@ -29,11 +29,14 @@ struct PerfectGas {
 };
 
 /// Dimensionless nozzle flow function psi(p/p0) (choked value below the critical ratio) [-].
+/// One pow() in the subsonic case: with t = pr^((gamma-1)/gamma),
+///   pr^(2/gamma) - pr^((gamma+1)/gamma) = pr^2/t^2 (1 - t),  and pr <= pr*  <=>  t <= 2/(gamma+1).
 inline double nozzleFlowFunction(const PerfectGas& g, double pr) {
-  const double prc = g.criticalPressureRatio();
-  if (pr <= prc) return g.chokedFlowFunction();
   if (pr >= 1.0) return 0.0;
-  const double v = std::pow(pr, 2.0 / g.gamma) - std::pow(pr, (g.gamma + 1.0) / g.gamma);
+  if (!(pr > 0.0)) return g.chokedFlowFunction();
+  const double t = std::pow(pr, (g.gamma - 1.0) / g.gamma);
+  if (t <= 2.0 / (g.gamma + 1.0)) return g.chokedFlowFunction();
+  const double v = pr * pr / (t * t) * (1.0 - t);
   return std::sqrt(2.0 * g.gamma / (g.gamma - 1.0) * (v > 0.0 ? v : 0.0));
 }
 

@@ -98,14 +98,25 @@ void Network::advance(double interval) {
     const double remaining = t_end - t_;
     const double nsteps = std::max(1.0, std::ceil(remaining / dtmax * (1.0 - 1e-12)));
     const double dt = remaining / nsteps;
-    for (auto& b : boundaries_) b->computeFluxes(t_);
-    for (auto& p : pipes_) p->step(dt);
-    for (auto& v : volumes_) v->advance(dt);
-    for (auto& b : boundaries_) b->afterStep(dt);
+    stepOnce(dt);
     t_ = nsteps <= 1.0 ? t_end : t_ + dt;
-    last_dt_ = dt;
-    ++steps_;
   }
+}
+
+void Network::step(double dt) {
+  if (!validated_) validate();
+  if (!(dt >= 0.0)) throw InputError("network", "dt", "must be >= 0 s");
+  stepOnce(dt);
+  t_ += dt;
+}
+
+void Network::stepOnce(double dt) {
+  for (auto& b : boundaries_) b->computeFluxes(t_);
+  for (auto& p : pipes_) p->step(dt);
+  for (auto& v : volumes_) v->advance(dt);
+  for (auto& b : boundaries_) b->afterStep(dt);
+  last_dt_ = dt;
+  ++steps_;
 }
 
 double Network::totalMass() const {

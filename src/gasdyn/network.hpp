@@ -46,6 +46,8 @@ class Network {
 
   /// Advances all elements by `interval` [s] (many internal steps).
   void advance(double interval);
+  /// Exactly one step of dt [s] (the caller has checked dt <= stableDt(); no re-evaluation).
+  void step(double dt);
   double stableDt(std::string* limiter = nullptr) const;  // [s]
   double time() const { return t_; }
   long steps() const { return steps_; }
@@ -61,6 +63,7 @@ class Network {
 
  private:
   void validate();
+  void stepOnce(double dt);  // fluxes at t_, then all elements advance by dt (t_ not updated)
   PerfectGas gas_;
   std::vector<std::unique_ptr<Pipe>> pipes_;
   std::vector<std::unique_ptr<Volume>> volumes_;

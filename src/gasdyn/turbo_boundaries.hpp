@@ -48,6 +48,7 @@ class TurbineEntry final : public Boundary {
   Volume& out_;
   std::shared_ptr<const FlowMap> map_;
   double speed_ = 0.0, mdot_ = 0.0, power_ = 0.0, work_ = 0.0;
+  double guess_out_ = 0.0, guess_in_ = 0.0;  // warm start of the face solvers [m/s]
 };
 
 class CompressorOutlet final : public Boundary {
@@ -66,6 +67,7 @@ class CompressorOutlet final : public Boundary {
   PipeEnd end_;
   std::shared_ptr<const FlowMap> map_;
   double speed_ = 0.0, mdot_ = 0.0, power_ = 0.0, work_ = 0.0;
+  double guess_ = 0.0;  // warm start of the delivery face solver [m/s]
 };
 
 }  // namespace hbt::gasdyn
