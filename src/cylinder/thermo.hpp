@@ -105,7 +105,8 @@ class GasThermo {
 /// Mixture by group masses [kg] → extensive polynomial (J/K units), built without allocation.
 inline Poly mixturePoly(const GasThermo& th, const double m[kNumGroups]) {
   Poly p;
-  for (int g = 0; g < kNumGroups; ++g) p.addScaled(th.group(Group(g)), m[g]);
+  for (int g = 0; g < kNumGroups; ++g)
+    if (m[g] != 0.0) p.addScaled(th.group(Group(g)), m[g]);  // empty groups add exactly 0
   return p;
 }
 

@@ -103,7 +103,7 @@ void ChargeAirCoolerLink::computeFluxes(double) {
   const PipeEnd& dn = forward ? b_ : a_;
   const EndState su = forward ? sa : sb, sd = forward ? sb : sa;
   const double pd = sd.p;
-  if (forward != (guess_ >= 0.0)) guess_ = 0.0;  // direction change: cold start
+  if (forward != (guess_ >= 0.0)) guess_ = guess_down_ = 0.0;  // direction change: cold start
   double gw = std::fabs(guess_);
   FaceState fu = warmOutflowFace(g, su, [&](double p0, double T0) {
     return ic_.massFlowForDrop(p0 - pd, T0, p0);
@@ -120,7 +120,7 @@ void ChargeAirCoolerLink::computeFluxes(double) {
   double p0u, T0u;
   stagnation(g, fu, p0u, T0u);
   double T0d = ic_.outletTemperature(T0u, T_cool_, mdot);
-  FaceState fd = massFlowFace(g, sd, mdot, T0d);
+  FaceState fd = warmInflowMassFlowFace(g, sd, mdot, T0d, guess_down_);
   const double md = fd.mdot_in(sd.A);
   if (md < mdot) {  // downstream face choked
     mdot = md;

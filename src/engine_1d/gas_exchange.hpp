@@ -79,7 +79,7 @@ class ChargeAirCoolerLink final : public gasdyn::Boundary {
  private:
   gasdyn::PipeEnd a_, b_;
   const turbo::Intercooler& ic_;
-  double guess_ = 0.0;
+  double guess_ = 0.0, guess_down_ = 0.0;  // warm starts: upstream outflow, downstream inflow
   double T_cool_ = 298.15, mdot_ = 0.0, heat_W_ = 0.0, heat_J_ = 0.0, T0_out_ = 298.15;
 };
 

@@ -248,4 +248,20 @@ FaceState warmDemandInflowFace(const PerfectGas& gas, const EndState& s, Demand 
   return fs;
 }
 
+/// massFlowFace for an inflow (mdot_in > 0, supply total temperature T0_in) with a warm start;
+/// `guess` [m/s] = face velocity of the last call (in/out). Capped at the sonic face as there.
+inline FaceState warmInflowMassFlowFace(const PerfectGas& gas, const EndState& s, double mdot_in,
+                                        double T0_in, double& guess) {
+  if (!(mdot_in > 0.0)) {
+    guess = 0.0;
+    return massFlowFace(gas, s, mdot_in, T0_in);
+  }
+  const detail::Wave w(gas, s);
+  const double us = std::sqrt(2.0 * gas.gamma * gas.R * T0_in / (gas.gamma + 1.0));
+  auto f = [&](double ub) { return w.inflow(gas, ub, T0_in).mdot_in(w.A) - mdot_in; };
+  const double x = detail::warmRoot(f, us, guess);  // f(0) = -mdot_in < 0
+  guess = x;
+  return w.inflow(gas, x, T0_in);
+}
+
 }  // namespace hbt::gasdyn
