@@ -94,6 +94,42 @@ TEST(Rig, CycleEnergyBalanceCloses) {
   EXPECT_GT(r.exhaust_enthalpy_J, 0.2 * r.heat_release_J);
 }
 
+TEST(Rig, FlameConsumingTheWholeUnburnedZoneKeepsEnergyBalance) {
+  // Limit case: a flame air excess (3.0) above the global one (full-load fuel, lambda ~1.7): the
+  // burned zone takes nearly all the air of the unburned zone; energy must still be conserved
+  // and all fuel burned. (The exact emptying of the unburned zone, handled by a zone merge in
+  // Cylinder::advance, is exercised by the coupled Urban run in test/scenario/test_engine_1d.py
+  // past t = 40 s, where it first occurred.)
+  RigParams rp;
+  CylinderParams cp = test::loadParams(&rp);
+  cp.flame_lambda = 3.0;
+  rp.fuel_per_cycle_kg = 125e-6;
+  rp.p_intake_Pa = 2.7e5;
+  rp.p_exhaust_Pa = 2.4e5;
+  SingleCylinderRig rig(cp, rp);
+  ASSERT_NO_THROW(rig.runCycles(3));
+  Cylinder& c = rig.cylinder();
+  auto U = [&]() {
+    double m[kNumGroups];
+    for (int g = 0; g < kNumGroups; ++g) m[g] = c.groupMass(Group(g));
+    return mixturePoly(c.thermo(), m).u(c.temperature_K());
+  };
+  const double U0 = U();
+  double H = 0.0;
+  const double dt = rp.step_deg * M_PI / 180.0 / (rp.speed_rpm * M_PI / 30.0);
+  const int start = c.cyclesCompleted();
+  while (c.cyclesCompleted() == start) {
+    const PortFlows f = rig.step();
+    H += (f.intake.Hdot_W + f.exhaust.Hdot_W) * dt;
+  }
+  const CycleResults& r = c.lastCycle();
+  const double h_inj = c.thermo().group(kFuelVap).h(cp.fuel_temperature_K) - cp.fuel.hfg_J_kg;
+  const double rhs = H + r.fuel_burned_kg * (cp.fuel.lhv_J_kg + cp.fuel.hfg_J_kg) +
+                     r.fuel_injected_kg * h_inj - r.heat_wall_J - r.work_net_J;
+  EXPECT_NEAR((U() - U0 - rhs) / r.heat_release_J, 0.0, 1e-9);
+  EXPECT_NEAR(r.fuel_burned_kg / r.fuel_injected_kg, 1.0, 2e-3);
+}
+
 TEST(Rig, PhysicalTrends) {
   RigParams rp;
   const CylinderParams cp0 = test::loadParams(&rp);

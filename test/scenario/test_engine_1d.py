@@ -30,7 +30,8 @@ class Engine1DScenario(unittest.TestCase):
     def setUpClass(cls):
         cls.tmp = tempfile.mkdtemp(prefix="hbt_1d_")
         cls.runs = {}
-        for solver, until in (("fsm", 25.0), ("tvd", 3.0)):
+        # fsm past t = 40 s: a cylinder's unburned zone empties there (zone-merge regression)
+        for solver, until in (("fsm", 45.0), ("tvd", 3.0)):
             out = os.path.join(cls.tmp, solver)
             st = run_util.run_launch(LAUNCH, out, engine="1d", solver=solver, until=until,
                                      timeout=20.0, record_period=0)
@@ -46,7 +47,7 @@ class Engine1DScenario(unittest.TestCase):
         bag = os.path.join(out, "run.bag")
         eng = messages(bag, "/engine/state")
         exh = messages(bag, "/engine/exhaust")
-        self.assertEqual(len(eng), 2501)
+        self.assertEqual(len(eng), 4501)
         for m in eng:
             for f in m.__slots__:
                 v = getattr(m, f)
