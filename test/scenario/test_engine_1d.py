@@ -53,7 +53,8 @@ class Engine1DScenario(unittest.TestCase):
                 v = getattr(m, f)
                 if isinstance(v, float):
                     self.assertTrue(math.isfinite(v), (f, m.header.stamp.to_sec()))
-        self.assertTrue(all(m.mass_flow_kg_s > 0 and 250 < m.temperature_k < 1200 for m in exh))
+        # (t = 0 is the state before the first engine cycle: no flow through the turbine yet)
+        self.assertTrue(all(m.mass_flow_kg_s > 0 and 250 < m.temperature_k < 1200 for m in exh[1:]))
         self.assertGreater(exh[-1].nox_mass_kg, 0.0)
         # idle at t = 0..12 s: the engine holds ~700 rpm under the vehicle's idle governor
         idle = [m.engine_speed_rad_s * 60 / (2 * math.pi) for m in eng if 5.0 < m.header.stamp.to_sec() < 12.0]
