@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Benchmarks of the twin (full missions: minutes to hours; never part of the test suite).
 
   scripts/twin bench [map]          baseline_urban, map engine, full mission, mode nodes and

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Results of one run of the twin: DIR/summary.json, DIR/report.md and PNG plots, computed from
 DIR/run.bag (analysed by header.stamp) and DIR/status.json (written by the master stepper).
 

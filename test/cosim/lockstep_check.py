@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """rostest node: watches /mass_a/state, /mass_b/state and /sim/status while the oscillator
 scenario runs and checks the lock-step contract: every macro-step stamp appears exactly once per
 topic and in order (no step lost or repeated, t = 0 included), no participant reports a step

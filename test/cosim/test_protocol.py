@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Step-protocol tests on the two-mass oscillator scenario (test/cosim/oscillator.launch):
 lock-step results against the exact solution, convergence of the coupling error with the
 macro step, bit-identical repeated runs, a killed node stopping the run within 2 s with a

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Scenario tests of baseline_urban on short stretches of the Urban mission (until:=...):
 nodes vs nodelets and repeated runs give bit-identical bags; the driveline energy balance of the
 run closes and the engine's own brake work agrees with the work the vehicle received; a killed

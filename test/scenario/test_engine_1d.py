@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """baseline_urban with engine:=1d on the first seconds of the Urban mission (the full mission is
 in `scripts/twin bench 1d`): the crank-angle 1D engine coupled to the vehicle through the step
 protocol. Checks: the run completes; every output is finite; the brake work the engine reports
