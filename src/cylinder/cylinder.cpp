@@ -266,15 +266,17 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
   // 6. implicit energy equations.
   refreshPolys();
   if (two_zone_) {
-    // Unburned zone consumed (the flame took its last air/vapour this step): its temperature is
-    // undefined and the two-zone Newton degenerate. The zone's remaining energy and volume
-    // (U = -p V of the removed mass, exact bookkeeping) go to the single remaining zone.
+    // Unburned zone (nearly) consumed by the flame: below 0.1 % of the charge its explicit
+    // exchanges (entrainment at h, wall heat) can leave it less energy than any temperature
+    // allows and the two-zone Newton degenerates (seen in coupled Urban runs). Its remaining
+    // mass, energy and volume join the burned gas as one zone (energy conserved exactly; the
+    // zones split again if fuel burns later).
     double m_u = 0.0, m_b = 0.0;
     for (int g = 0; g < kNumGroups; ++g) {
       m_u += mu_[g];
       m_b += mb_[g];
     }
-    if (m_u < 1e-9 * (m_u + m_b)) {
+    if (m_u < 1e-3 * (m_u + m_b)) {
       mergeZones();
       Uu += Ub;
       Ub = 0.0;

@@ -13,22 +13,12 @@
 #include "cylinder/combustion.hpp"
 #include "cylinder/kinematics.hpp"
 #include "cylinder/losses.hpp"
+#include "common/table2d.hpp"
 #include "cylinder/thermo.hpp"
 
 namespace hbt::cyl {
 
-class Table2D {
- public:
-  Table2D() = default;
-  /// Throws InputError(file, key) unless axes strictly increase and values.size() = nx·ny.
-  Table2D(std::vector<double> x, std::vector<double> y, std::vector<double> v,
-          const std::string& file, const std::string& key);
-  double operator()(double x, double y) const;  // no allocation
-  bool empty() const { return v_.empty(); }
-
- private:
-  std::vector<double> x_, y_, v_;
-};
+using hbt::Table2D;  // common/table2d.hpp
 
 struct CylinderParams {
   Geometry geometry;

@@ -17,6 +17,7 @@
 // and load (cylinder/injection/*, latched at inlet-valve closure).
 #pragma once
 #include "common/pid.hpp"
+#include "common/table2d.hpp"
 #include "cylinder/cylinder_params.hpp"
 #include "engine_1d/engine_1d_params.hpp"
 
@@ -58,7 +59,7 @@ class EngineControllers {
 
  private:
   Engine1DConfig cfg_;
-  cyl::Table2D boost_;
+  Table2D boost_;
   Pid fuel_pid_, wg_pid_;
   double afr_, fuel_ref_;
 };

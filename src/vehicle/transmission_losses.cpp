@@ -28,31 +28,21 @@ GearLossMap::GearLossMap(const std::string& path) {
   ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
   if (ns.size() < 2 || ts.size() < 2 || ts.front() != 0.0)
     throw InputError(path, "inputtorque", "need >= 2 speeds and >= 2 torques starting at 0 Nm");
+  std::vector<double> loss, w;
   for (double a : ns)
     for (double b : ts) {
       const auto it = pts.find({a, b});
       if (it == pts.end())
         throw InputError(path, "torqueloss", "grid incomplete: no point at " + std::to_string(a) +
                                                  " rpm, " + std::to_string(b) + " Nm");
-      loss_.push_back(it->second);
+      loss.push_back(it->second);
     }
-  for (double a : ns) w_.push_back(units::rpmToRadps(a));
-  t_ = ts;
+  for (double a : ns) w.push_back(units::rpmToRadps(a));
+  loss_ = Table2D(w, ts, loss, path, "torqueloss");
 }
 
 double GearLossMap::total(double w_in, double T_in) const {
-  const double w = std::clamp(std::fabs(w_in), w_.front(), w_.back());
-  const double T = std::clamp(std::fabs(T_in), t_.front(), t_.back());
-  const std::size_t i = std::min<std::size_t>(
-      std::upper_bound(w_.begin(), w_.end(), w) - w_.begin(), w_.size() - 1) - 1;
-  const std::size_t j = std::min<std::size_t>(
-      std::upper_bound(t_.begin(), t_.end(), T) - t_.begin(), t_.size() - 1) - 1;
-  const double a = (w - w_[i]) / (w_[i + 1] - w_[i]);
-  const double b = (T - t_[j]) / (t_[j + 1] - t_[j]);
-  const std::size_t nt = t_.size();
-  const double l00 = loss_[i * nt + j], l01 = loss_[i * nt + j + 1];
-  const double l10 = loss_[(i + 1) * nt + j], l11 = loss_[(i + 1) * nt + j + 1];
-  return (1 - a) * ((1 - b) * l00 + b * l01) + a * ((1 - b) * l10 + b * l11);
+  return loss_(std::fabs(w_in), std::fabs(T_in));  // symmetric in the signs, clamped at the edges
 }
 
 RetarderLoss::RetarderLoss(const std::string& path) {

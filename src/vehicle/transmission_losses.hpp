@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common/table1d.hpp"
+#include "common/table2d.hpp"
 
 namespace hbt::vehicle {
 
@@ -33,7 +34,7 @@ class GearLossMap {
   }
 
  private:
-  std::vector<double> w_, t_, loss_;  // grid axes [rad/s], [Nm]; loss row-major (w, t)
+  Table2D loss_;  // L(ω [rad/s], T_in [Nm]) [Nm]
 };
 
 /// Retarder drag torque table vs shaft speed; empty path = no retarder (0 Nm).
