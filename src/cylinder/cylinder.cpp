@@ -203,7 +203,7 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
       const double spare = mu_[kAir] / std::max(mu_[kFuelVap] + deferred_kg_, dm_fb);
       const double dm_air = dm_fb * std::max(afr, std::min(afr * P_.flame_lambda, spare));
       const double q = (P_.fuel.lhv_J_kg + P_.fuel.hfg_J_kg) * dm_fb;
-      if (closed_ && !flowing) {
+      if (closed_ && !flowing && !zones_merged_) {
         if (!two_zone_) {
           two_zone_ = true;
           Tb_ = Tu_ + 2000.0;
@@ -269,8 +269,10 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
     // Unburned zone (nearly) consumed by the flame: below 0.1 % of the charge its explicit
     // exchanges (entrainment at h, wall heat) can leave it less energy than any temperature
     // allows and the two-zone Newton degenerates (seen in coupled Urban runs). Its remaining
-    // mass, energy and volume join the burned gas as one zone (energy conserved exactly; the
-    // zones split again if fuel burns later).
+    // mass, energy and volume join the burned gas as one zone (energy conserved exactly). Fuel
+    // still burning in this cycle then burns in that one zone, and the NO kinetics freeze (the
+    // late, diluted combustion adds no NO; re-splitting would put the cycle's NO moles into a
+    // near-empty burned zone).
     double m_u = 0.0, m_b = 0.0;
     for (int g = 0; g < kNumGroups; ++g) {
       m_u += mu_[g];
@@ -278,6 +280,7 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
     }
     if (m_u < 1e-3 * (m_u + m_b)) {
       mergeZones();
+      zones_merged_ = true;  // rest of this cycle: one zone (NO frozen), no re-split
       Uu += Ub;
       Ub = 0.0;
       Vu0 += Vb0;

@@ -165,6 +165,7 @@ class Cylinder {
   double m_ = 0, mR_ = 0;   // total mass and Σ m R
   double woschni_pre_ = 0;  // multiplier C0 B^−0.2
   bool two_zone_ = false, closed_ = false, combustion_started_ = false;
+  bool zones_merged_ = false;  // unburned zone consumed this cycle (see advance(), step 6)
   // IVC reference for Woschni
   double pr_ = 1e5, Vr_ = 1e-3, Tr_ = 300, nr_ = 1.35;
   double fuel_demand_kg_ = 0, T_coolant_K_ = 363.15, load_ = 0;

@@ -15,6 +15,7 @@ constexpr double kM_NO = 30.0061e-3, kM_NO2 = 46.0055e-3;
 
 void Cylinder::onIVC(double omega) {
   closed_ = true;
+  zones_merged_ = false;
   combustion_started_ = false;
   deferred_kg_ = 0.0;
   pr_ = p_;
