@@ -17,9 +17,6 @@ void Engine1DParticipant::configure() {
   }
   double ambient_c = 25.0;
   nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
-  pnh_.param("coolant_temperature_k", coolant_T_K_, 363.15);
-  if (!(coolant_T_K_ > 200.0 && coolant_T_K_ < 420.0))
-    throw InputError(configFile(), "coolant_temperature_k", "must be in (200, 420) K");
   ambient_T_K_ = units::celsiusToK(ambient_c);
   engine_ = std::make_unique<Engine1D>(p, pkg);
   speed_rad_s_ = units::rpmToRadps(700.0);

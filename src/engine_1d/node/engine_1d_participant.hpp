@@ -7,7 +7,7 @@
 // (cylinder, turbo, reference map) so that errors name each file and key; `solver` (fsm|tvd,
 // optional) overrides engine_1d/solver. Until the aftertreatment and cooling nodes exist the
 // back-pressure comes from the model's documented constant-orifice default and the coolant is
-// at its thermostat temperature (coolant_temperature_k, default 363.15 K).
+// at the model's thermostat temperature (Engine1DInputs::coolant_T_K, 363.15 K).
 #pragma once
 #include <hybrid_bus_twin/EngineCommand.h>
 
@@ -32,7 +32,8 @@ class Engine1DParticipant : public cosim::Participant {
   std::unique_ptr<Engine1D> engine_;
   cosim::Input<hybrid_bus_twin::EngineCommand>* command_ = nullptr;
   cosim::EnginePorts ports_;
-  double speed_rad_s_ = 0.0, ambient_T_K_ = 298.15, coolant_T_K_ = 363.15;
+  double speed_rad_s_ = 0.0, ambient_T_K_ = 298.15;
+  const double coolant_T_K_ = Engine1DInputs{}.coolant_T_K;  // until the cooling node exists
   double positive_work_J_ = 0.0, motoring_work_J_ = 0.0;
 };
 
