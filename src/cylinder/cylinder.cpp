@@ -18,6 +18,7 @@ Cylinder::Cylinder(const CylinderParams& params, const std::string& name)
       crank_(params.geometry) {
   if (P_.soi_main.empty()) P_.finalize();
   woschni_pre_ = P_.woschni.multiplier * P_.woschni.C0 * std::pow(P_.geometry.bore_m, -0.2);
+  hohenberg_pre_ = P_.woschni.multiplier * P_.woschni.hohenberg_C;
   initialize(-360.0, 1e5, 300.0, 0.0);
 }
 
@@ -241,11 +242,18 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
     const bool comb = closed_ && combustion_started_;
     const double pmot = comb ? pr_ * std::exp(nr_ * std::log(Vr_ / V0)) : p0;
     const Geometry& G = crank_.geometry();
-    const double w = P_.woschni.velocity(!closed_, comb, cm, G.bore_m, G.stroke_m,
-                                         crank_.displacement(), Tr_, pr_, Vr_, p0, pmot);
-    // woschniCoefficient() with the bore factor precomputed: C0 B^−0.2 (p[kPa] w)^0.8 T^−0.55
-    const double h = woschni_pre_ * std::exp(0.8 * std::log(p0 * 1e-3 * std::max(w, 1e-6)) -
-                                             0.55 * std::log(Tm));
+    double h;
+    if (P_.woschni.hohenberg) {
+      // hohenbergCoefficient() with C_H and the multiplier folded in: V^−0.06 p[bar]^0.8 T^−0.4 (c_m+1.4)^0.8
+      h = hohenberg_pre_ * std::exp(-0.06 * std::log(V0) + 0.8 * std::log(p0 * 1e-5) -
+                                    0.4 * std::log(Tm) + 0.8 * std::log(cm + 1.4));
+    } else {
+      const double w = P_.woschni.velocity(!closed_, comb, cm, G.bore_m, G.stroke_m,
+                                           crank_.displacement(), Tr_, pr_, Vr_, p0, pmot);
+      // woschniCoefficient() with the bore factor precomputed: C0 B^−0.2 (p[kPa] w)^0.8 T^−0.55
+      h = woschni_pre_ * std::exp(0.8 * std::log(p0 * 1e-3 * std::max(w, 1e-6)) -
+                                  0.55 * std::log(Tm));
+    }
     const double Ah = crank_.headArea(), Ap = crank_.pistonCrownArea(),
                  Al = M_PI * G.bore_m * (travel0 + G.top_land_height_m);
     const double A = Ah + Ap + Al, AT = Ah * Thead_ + Ap * Tpiston_ + Al * Tliner_;

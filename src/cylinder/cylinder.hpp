@@ -163,7 +163,8 @@ class Cylinder {
   double Tu_ = 300, Tb_ = 300, Vu_ = 0, Vb_ = 0, travel_ = 0;
   Poly Pu_, Pb_;            // extensive zone polynomials of the current masses
   double m_ = 0, mR_ = 0;   // total mass and Σ m R
-  double woschni_pre_ = 0;  // multiplier C0 B^−0.2
+  double woschni_pre_ = 0;    // multiplier C0 B^−0.2
+  double hohenberg_pre_ = 0;  // multiplier C_H
   bool two_zone_ = false, closed_ = false, combustion_started_ = false;
   bool zones_merged_ = false;  // unburned zone consumed this cycle (see advance(), step 6)
   // IVC reference for Woschni

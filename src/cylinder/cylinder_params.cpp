@@ -76,6 +76,8 @@ void CylinderParams::declare(ParamSet& ps) {
   ps.add("diffusion_injection_factor", diffusion_injection_factor, "-", 0.0, 3.0, "weight of injection duration");
   ps.add("flame_lambda", flame_lambda, "-", 1.0, 3.0, "air excess of the burned zone");
   ps.setPrefix("cylinder/heat_transfer/");
+  ps.add("correlation", heat_transfer_correlation, "woschni | hohenberg");
+  ps.add("hohenberg_C", woschni.hohenberg_C, "-", 10.0, 1000.0, "Hohenberg constant C_H (130)");
   ps.add("woschni_C0", woschni.C0, "-", 0.5, 10.0, "Woschni constant (3.26)");
   ps.add("swirl_ratio", woschni.swirl_ratio, "-", 0.0, 5.0, "swirl ratio for C1");
   ps.add("woschni_C2_m_sK", woschni.C2_m_sK, "m/(s K)", 0.0, 0.02, "combustion term C2");
@@ -121,6 +123,13 @@ void CylinderParams::finalize(const std::string& file) {
   premix_m = mk(premixed_m, c + "premixed_m");
   diff_tail = mk(diffusion_tail_deg, c + "diffusion_tail_deg");
   diff_m = mk(diffusion_m, c + "diffusion_m");
+  if (heat_transfer_correlation == "woschni")
+    woschni.hohenberg = false;
+  else if (heat_transfer_correlation == "hohenberg")
+    woschni.hohenberg = true;
+  else
+    throw InputError(file, "cylinder/heat_transfer/correlation",
+                     "'" + heat_transfer_correlation + "' is not one of woschni, hohenberg");
   if (!(ivc_deg < 0.0 && evo_deg > 0.0 && evo_deg - ivc_deg < 360.0))
     throw InputError(file, "cylinder/valve_events/ivc_deg", "need IVC < 0 < EVO within 360 deg");
 }

@@ -44,6 +44,7 @@ struct CylinderParams {
   double diffusion_injection_factor = 1.0;  // Δθ_diff = factor × Δθ_inj,after SOC + tail
   double flame_lambda = 1.5;                // air/fuel of the burned zone relative to stoich.
   WoschniParams woschni;
+  std::string heat_transfer_correlation = "woschni";  // woschni | hohenberg (sets woschni.hohenberg)
   WallTemperatures walls;
   ChenFlynn friction;
   bool nox_enabled = true;

@@ -11,6 +11,11 @@ double woschniCoefficient(double B, double p_Pa, double T, double w, double C0) 
                        0.55 * std::log(T));
 }
 
+double hohenbergCoefficient(double V, double p_Pa, double T, double cm, double C_H) {
+  return C_H * std::exp(-0.06 * std::log(V) + 0.8 * std::log(p_Pa * 1e-5) - 0.4 * std::log(T) +
+                        0.8 * std::log(cm + 1.4));
+}
+
 double WoschniParams::velocity(bool gas_exchange, bool combustion, double cm, double B, double S,
                                double Vd, double Tr, double pr, double Vr, double p,
                                double pmot) const {

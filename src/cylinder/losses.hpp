@@ -7,6 +7,11 @@
 //   3.24e−3 m/(s K) from start of combustion to exhaust-valve opening. The reference state
 //   (p_r, V_r, T_r) is the state at inlet-valve closure, p_mot = p_r (V_r/V)^n_r the motored
 //   pressure with the polytropic exponent n_r = γ at IVC.
+// Hohenberg 1979 (alternative, developed on DI truck diesels; correlation: hohenberg):
+//   h = C_H V^−0.06 p^0.8 T^−0.4 (c_m + 1.4)^0.8          [W/(m² K)], V [m³], p [bar], T [K],
+//   C_H = 130; c_m mean piston speed [m/s]. Its "+1.4 m/s" keeps a convective floor at low
+//   speed where Woschni's c_m^0.8 falls off (Woschni is known to under-predict at low speed and
+//   load); no combustion term (the pressure and temperature carry it).
 // Heat flux to each surface s:  Q̇_s = h A_s (T_gas − T_s)   [W].
 // Wall temperatures follow the coolant (an input) and the load (fuel per cycle / reference fuel):
 //   T_s = T_coolant + ΔT_s,0 + ΔT_s,load · load.
@@ -22,11 +27,16 @@ namespace hbt::cyl {
 /// Woschni heat-transfer coefficient [W/(m² K)] (p in Pa, converted to kPa inside).
 double woschniCoefficient(double bore_m, double p_Pa, double T_K, double w_m_s, double C0 = 3.26);
 
+/// Hohenberg heat-transfer coefficient [W/(m² K)] (V [m³], p [Pa], T [K], c_m [m/s]).
+double hohenbergCoefficient(double V_m3, double p_Pa, double T_K, double cm_m_s, double C_H = 130.0);
+
 struct WoschniParams {
   double C0 = 3.26;
   double swirl_ratio = 1.5;
   double C2_m_sK = 3.24e-3;
   double multiplier = 1.0;  // calibration factor on h
+  bool hohenberg = false;   // correlation: false = Woschni, true = Hohenberg (key "correlation")
+  double hohenberg_C = 130.0;  // Hohenberg constant C_H
   /// Characteristic velocity [m/s]. gas_exchange: valves open; combustion: after start of combustion.
   double velocity(bool gas_exchange, bool combustion, double cm, double bore_m, double stroke_m,
                   double Vd, double Tr, double pr, double Vr, double p, double pmot) const;

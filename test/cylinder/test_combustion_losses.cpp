@@ -108,6 +108,16 @@ TEST(Woschni, CoefficientAgainstHandCalculation) {
               (6.18 + 0.417 * cu_cm) * 6.16, 1e-12);
 }
 
+TEST(Hohenberg, CoefficientAgainstHandCalculation) {
+  // h = 130 V^−0.06 p[bar]^0.8 T^−0.4 (c_m + 1.4)^0.8 at V = 1.0e−3 m³, p = 80 bar, T = 1200 K,
+  //   c_m = 6.16 m/s: 130 · 1.51356 · 33.3021 · 0.058658 · 5.04449 = 1938.9 W/(m² K)
+  EXPECT_NEAR(hohenbergCoefficient(1.0e-3, 80e5, 1200.0, 6.16), 1938.92, 0.05);
+  // Limit: at standstill the "+1.4 m/s" keeps a convective floor; h scales as p^0.8.
+  const double h0 = hohenbergCoefficient(1.0e-3, 80e5, 1200.0, 0.0);
+  EXPECT_NEAR(h0, 1938.92 * std::pow(1.4 / 7.56, 0.8), 0.05);
+  EXPECT_NEAR(hohenbergCoefficient(1.0e-3, 160e5, 1200.0, 0.0) / h0, std::pow(2.0, 0.8), 1e-12);
+}
+
 TEST(ChenFlynn, FormulaAndColdOil) {
   ChenFlynn cf;
   // Hot (coolant 85 °C → oil 90 °C = reference): FMEP = 0.10 + 0.005·150 + 0.13·6.16 + 0.0015·6.16²
