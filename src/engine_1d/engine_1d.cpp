@@ -129,6 +129,11 @@ const Engine1DOutputs& Engine1D::step(double dt, const Engine1DInputs& in) {
   // gas dynamics and cylinders
   A.advance(dt, w);
   computeOutputs(dt, w, in);
+  // Brake work of the published (cycle-mean) torque over this macro step, split by sign as the
+  // map engine does, so the vehicle-side energy balance sees the same numbers.
+  const double work_J = out_.brake_torque_Nm * w * dt;
+  out_.brake_work_J += work_J;
+  (work_J > 0.0 ? out_.positive_work_J : out_.motoring_work_J) += work_J;
   out_.cpu_time_s = threadCpu() - cpu0;
   out_.cpu_time_total_s += out_.cpu_time_s;
   return out_;

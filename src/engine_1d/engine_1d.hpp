@@ -73,6 +73,9 @@ struct Engine1DOutputs {
   double peak_cylinder_pressure_Pa = 0;  // max over cylinders of the last completed cycles
   double turbine_inlet_p_Pa = 0, turbine_inlet_T_K = 0;  // cycle means, mean of both entries
   double max_torque_Nm = 0, min_torque_Nm = 0;           // reference full-load / motoring at w
+  double brake_work_J = 0;     // sum of T_b w dt over macro steps (T_b the published torque) [J]
+  double positive_work_J = 0;  // its positive part [J]
+  double motoring_work_J = 0;  // its negative part (<= 0) [J]
   bool fuel_cut = false, smoke_limited = false;
   double cpu_time_s = 0;               // thread CPU time of this step
   double cpu_time_total_s = 0;         // since reset

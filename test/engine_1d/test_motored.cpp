@@ -41,6 +41,7 @@ TEST(Engine1DMotored, EnergyConservationAtThePortsOverConvergedCycles) {
   e.reset(w, 550.0);
   run(e, rpm, 550.0, 30 * tc, 298.15, true, tc / 36.0);  // converge
   const EnergyTotals a = e.assembly().totals();
+  const Engine1DOutputs w0 = e.outputs();
   run(e, rpm, 550.0, 5 * tc, 298.15, true, tc / 36.0);   // 5 whole cycles
   const EnergyTotals b = e.assembly().totals();
   const double fuel = b.fuel_energy_J - a.fuel_energy_J;
@@ -58,4 +59,20 @@ TEST(Engine1DMotored, EnergyConservationAtThePortsOverConvergedCycles) {
   EXPECT_NEAR(rhs / fuel, 1.0, 0.03);
   EXPECT_GT(brake / fuel, 0.30);  // brake efficiency of a HD diesel at mid load: 0.38-0.44
   EXPECT_LT(brake / fuel, 0.48);
+  // The published brake-work totals (Σ T_b ω Δt of the cycle-mean torque) equal the exact
+  // p dV work minus friction over whole cycles at steady state, and are all positive work.
+  const double dW = e.outputs().brake_work_J - w0.brake_work_J;
+  EXPECT_NEAR(dW / brake, 1.0, 0.01);
+  EXPECT_DOUBLE_EQ(e.outputs().positive_work_J - w0.positive_work_J, dW);
+  EXPECT_EQ(e.outputs().motoring_work_J, w0.motoring_work_J);
+  // Fuel cut: once the one-cycle window holds only dragged cycles, all work goes to the motoring
+  // total (T_mot w t within 5 %) and the positive total stays.
+  run(e, rpm, -2000.0, 1.0, 298.15, false);
+  const Engine1DOutputs before = e.outputs();
+  run(e, rpm, -2000.0, 5 * tc, 298.15, false, tc / 36.0);
+  const double mot0 = e.outputs().motoring_work_J;
+  const Engine1DOutputs& o = run(e, rpm, -2000.0, 5 * tc, 298.15, false, tc / 36.0);
+  EXPECT_EQ(o.positive_work_J, before.positive_work_J);
+  EXPECT_LT(o.motoring_work_J - mot0, 0.0);
+  EXPECT_NEAR((o.motoring_work_J - mot0) / (o.brake_torque_Nm * w * 5 * tc), 1.0, 0.05);
 }

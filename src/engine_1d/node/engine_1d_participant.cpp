@@ -38,9 +38,7 @@ void Engine1DParticipant::step(const ros::Time& t, double dt_s) {
   in.coolant_T_K = coolant_T_K_;
   in.fuel_enabled = cmd.engine_on;
   speed_rad_s_ = in.speed_rad_s;
-  const Engine1DOutputs& o = engine_->step(dt_s, in);
-  const double work = o.brake_torque_Nm * speed_rad_s_ * dt_s;
-  (work > 0.0 ? positive_work_J_ : motoring_work_J_) += work;
+  engine_->step(dt_s, in);
 }
 
 void Engine1DParticipant::publishOutputs(const ros::Time& t) {
@@ -52,8 +50,8 @@ void Engine1DParticipant::publishOutputs(const ros::Time& t) {
   v.min_torque_Nm = engine_->motoringTorque(speed_rad_s_);
   v.fuel_mass_flow_kg_s = o.fuel_mass_flow_kg_s;
   v.fuel_mass_kg = o.fuel_mass_kg;
-  v.positive_work_J = positive_work_J_;
-  v.motoring_work_J = motoring_work_J_;
+  v.positive_work_J = o.positive_work_J;
+  v.motoring_work_J = o.motoring_work_J;
   v.boost_pressure_Pa = o.boost_pressure_Pa;
   v.turbo_speed_rad_s = o.turbo_speed_rad_s;
   v.lambda = o.lambda;

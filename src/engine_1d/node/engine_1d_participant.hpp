@@ -34,7 +34,6 @@ class Engine1DParticipant : public cosim::Participant {
   cosim::EnginePorts ports_;
   double speed_rad_s_ = 0.0, ambient_T_K_ = 298.15;
   const double coolant_T_K_ = Engine1DInputs{}.coolant_T_K;  // until the cooling node exists
-  double positive_work_J_ = 0.0, motoring_work_J_ = 0.0;
 };
 
 }  // namespace hbt::engine1d
