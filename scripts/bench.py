@@ -6,11 +6,16 @@
   scripts/twin bench map --until S  the same on the first S seconds only
   scripts/twin bench 1d [--until S]  map engine vs 1D engine (FSM), nodelets: wall/simulated,
                                     engine CPU/simulated, fuel, NOx, torque traces compared
+  scripts/twin bench engine [--duration S]  the 1D engine alone on the WHTC (GTR No. 4, speed
+                                    imposed, torque requested), FSM then TVD on the same trace:
+                                    CPU/simulated of each, FSM/TVD cost, cumulative fuel difference
+                                    (engine_1d_whtc --bench; default the whole 1800 s cycle)
 Results: printed as a table and written to results/bench/<name>.json.
 """
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -63,6 +68,44 @@ def bench_map(a):
     return 0 if len(rows) == 2 else 1
 
 
+def bench_engine(a):
+    """WHTC with FSM and TVD (engine_1d_whtc --bench): the solver cost targets of SPEC §3."""
+    tool = os.path.join(REPO, "build", "devel", "lib", "hybrid_bus_twin", "engine_1d_whtc")
+    if not os.path.exists(tool):
+        print("bench: %s not built (run scripts/twin setup)" % tool, file=sys.stderr)
+        return 1
+    out = os.path.join(REPO, "results", "bench", "engine_whtc")
+    os.makedirs(out, exist_ok=True)
+    cmd = [tool, "--bench", "--duration", "%g" % a.duration, "--out", out, "--root", REPO,
+           "--no-plot"]
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    with open(out + ".log", "w") as log:
+        log.write(p.stdout)
+    print(p.stdout)
+    line = [l for l in p.stdout.splitlines() if l.startswith("BENCH:")]
+    if p.returncode != 0 or not line:
+        print("bench: engine_1d_whtc --bench failed (log %s.log)" % out, file=sys.stderr)
+        return 1
+    def num(pattern):
+        m = re.search(pattern, line[0])
+        return float(m.group(1)) if m else float("nan")
+    res = {"duration_s": a.duration,
+           "fsm_cpu_per_sim": num(r"FSM CPU/sim ([-+\d.]+)"),
+           "tvd_cpu_per_sim": num(r"TVD CPU/sim ([-+\d.]+)"),
+           "fsm_over_tvd_cost_pct": num(r"FSM/TVD cost ([-+\d.]+) %"),
+           "fuel_fsm_g": num(r"fuel FSM ([-+\d.]+) g"),
+           "fuel_tvd_g": num(r"vs TVD ([-+\d.]+) g"),
+           "fuel_fsm_vs_tvd_pct": num(r"g: ([-+\d.]+) %")}
+    with open(os.path.join(REPO, "results", "bench", "engine_whtc.json"), "w") as f:
+        json.dump(res, f, indent=1)
+    print("| WHTC [s] | FSM CPU/sim | TVD CPU/sim | FSM/TVD cost | fuel FSM vs TVD |")
+    print("|---|---|---|---|---|")
+    print("| %.0f | %.4f | %.4f | %.1f %% | %+.2f %% |" % (
+        a.duration, res["fsm_cpu_per_sim"], res["tvd_cpu_per_sim"], res["fsm_over_tvd_cost_pct"],
+        res["fuel_fsm_vs_tvd_pct"]))
+    return 0
+
+
 def bench_1d(a):
     """Full mission with the 1D engine (FSM) against the map engine, same machine, nodelets."""
     rows = []
@@ -96,10 +139,12 @@ def bench_1d(a):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d"])
+    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine"])
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
+    ap.add_argument("--duration", type=float, default=1800.0,
+                    help="engine: WHTC seconds to run (default the whole 1800 s)")
     a = ap.parse_args()
-    return bench_map(a) if a.what == "map" else bench_1d(a)
+    return {"map": bench_map, "1d": bench_1d, "engine": bench_engine}[a.what](a)
 
 
 if __name__ == "__main__":
