@@ -10,7 +10,6 @@
 namespace hbt::engine1d {
 namespace {
 constexpr double kStep = 0.25;  // deg
-constexpr int kN = static_cast<int>(720.0 / kStep) + 1;
 }  // namespace
 
 CrankValveArea::CrankValveArea(const cyl::Cylinder& c, const ValveSpec& v, double open_deg,
@@ -19,14 +18,14 @@ CrankValveArea::CrankValveArea(const cyl::Cylinder& c, const ValveSpec& v, doubl
   duration_ = std::fmod(close_deg - open_deg + 1440.0, 720.0);
   const Table1D cd_n(v.ld, v.cd_normal, "valve", "cd_normal");
   const Table1D cd_b(v.ld, v.cd_back, "valve", "cd_back");
-  fwd_.resize(kN);
-  rev_.resize(kN);
-  for (int i = 0; i < kN; ++i) {
-    const double th = -360.0 + i * kStep, L = lift(th);
+  const int n = static_cast<int>(std::ceil(duration_ / kStep)) + 2;  // nodes beyond Delta: 0
+  tab_.resize(2 * static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const double L = lift(open_ + i * kStep);
     const double curtain = v.count * M_PI * v.diameter_m * L;
     const double an = curtain * cd_n(L / v.diameter_m), ab = curtain * cd_b(L / v.diameter_m);
-    fwd_[i] = normal_is_forward ? an : ab;
-    rev_[i] = normal_is_forward ? ab : an;
+    tab_[2 * i] = normal_is_forward ? an : ab;
+    tab_[2 * i + 1] = normal_is_forward ? ab : an;
   }
 }
 
@@ -37,14 +36,31 @@ double CrankValveArea::lift(double th) const {
   return v_.max_lift_m * std::pow(s > 0.0 ? s : 0.0, v_.shape_exponent);
 }
 
-double CrankValveArea::areaAt(double th, bool forward) const {
-  double x = (th + 360.0) / kStep;
-  if (x < 0.0) x = 0.0;
-  int i = static_cast<int>(x);
-  if (i > kN - 2) i = kN - 2;
+void CrankValveArea::areas(double th, double& fwd, double& rev) const {
+  double phi = th - open_;  // th in [-360, 360), open_ in [-360, 720): two wraps at most
+  if (phi < 0.0) phi += 720.0;
+  if (phi < 0.0) phi += 720.0;
+  if (phi >= 720.0) phi -= 720.0;
+  if (!(phi < duration_)) {
+    fwd = rev = 0.0;
+    return;
+  }
+  const double x = phi / kStep;
+  const int i = static_cast<int>(x);
   const double f = x - i;
-  const std::vector<double>& a = forward ? fwd_ : rev_;
-  return (1.0 - f) * a[i] + f * a[i + 1];
+  const double* a = &tab_[2 * static_cast<std::size_t>(i)];
+  fwd = (1.0 - f) * a[0] + f * a[2];
+  rev = (1.0 - f) * a[1] + f * a[3];
+}
+
+double CrankValveArea::areaAt(double th, bool forward) const {
+  double f, r;
+  areas(cyl::wrapCycleDeg(th), f, r);
+  return forward ? f : r;
+}
+
+void CrankValveArea::areasNow(double& forward, double& reverse) const {
+  areas(cyl_.crankAngle_deg(), forward, reverse);
 }
 
 double CrankValveArea::effectiveArea(gasdyn::FlowDirection dir, double) const {
@@ -62,8 +78,8 @@ void CylinderValve::computeFluxes(double t) {
   using namespace gasdyn;
   const PerfectGas& g = end_.pipe->gas();
   const EndState s = end_.state();
-  const double a_in = area_->effectiveArea(FlowDirection::Forward, t);
-  const double a_out = area_->effectiveArea(FlowDirection::Reverse, t);
+  double a_in, a_out;
+  area_->areasNow(a_in, a_out);
   const double pv = vol_.p(), Tv = vol_.T();
   FaceState f;
   if (a_in <= 0.0 && a_out <= 0.0) {
@@ -71,13 +87,21 @@ void CylinderValve::computeFluxes(double t) {
     guess_in_ = guess_out_ = 0.0;
   } else {
     const double pb0 = closedFacePressure(g, s);
+    // Nozzle t = (p_down/p0_up)^((gamma-1)/gamma) without a power per iteration (isentropes):
+    //  inflow  (face p_b = p b^ik):              (p_b/p_v)^k  = (p/p_v)^k b^2;
+    //  outflow (face p0 = p (T0/T)^(1/k)):       (p_v/p0)^k   = (p_v/p)^k T/T0.
+    const ConstPow pow_k((g.gamma - 1.0) / g.gamma);
     if (pv > pb0 && a_in > 0.0) {
-      f = warmInflowFace(g, s, [&](double pb) { return Supply{nozzleMassFlow(g, a_in, pv, Tv, pb), Tv}; },
-                         guess_in_);
+      const double tp = pow_k(s.p / pv);
+      f = warmInflowFace(g, s, [&](double pb, double b) {
+        return Supply{nozzleMassFlowT(g, a_in, pv, Tv, pb, tp * b * b), Tv};
+      }, guess_in_);
       guess_out_ = 0.0;
     } else if (pv < pb0 && a_out > 0.0) {
-      f = warmOutflowFace(g, s, [&](double p0, double T0) { return nozzleMassFlow(g, a_out, p0, T0, pv); },
-                          guess_out_);
+      const double tv = pow_k(pv / s.p), T = s.p / (s.rho * g.R);
+      f = warmOutflowFace(g, s, [&](double p0, double T0) {
+        return nozzleMassFlowT(g, a_out, p0, T0, pv, tv * T / T0);
+      }, guess_out_);
       guess_in_ = 0.0;
     } else {
       f = closedFace(g, s);

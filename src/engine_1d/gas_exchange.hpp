@@ -4,7 +4,9 @@
 // of one cylinder, read from the cylinder's own crank angle theta (firing TDC = 0, [-360, 360)):
 //   A_eff(theta, dir) = n_v Cd_dir(L/d) pi d L(theta),  L = L_max sin(pi phi/Delta)^k  (0 outside)
 //   phi = (theta - theta_open) mod 720, Delta = theta_close - theta_open (valve events of the
-//   cylinder model). Tabulated at construction every 0.25 deg (linear interpolation, O(1)).
+//   cylinder model). Tabulated at construction every 0.25 deg over the open phase only
+//   (phi in [0, Delta]; the events are on the 0.25 deg grid), forward/reverse interleaved (one
+//   cache line per look-up), linear interpolation, O(1); a closed valve needs no table access.
 //   Valve convention (gasdyn::Valve): Forward = from the cylinder into the runner. Intake: normal
 //   flow is Reverse; exhaust: normal flow is Forward.
 //
@@ -37,13 +39,16 @@ class CrankValveArea final : public gasdyn::AreaProvider {
                  double close_deg, bool normal_is_forward);
   double effectiveArea(gasdyn::FlowDirection dir, double t) const override;
   double areaAt(double theta_deg, bool forward) const;
+  /// Both effective areas [m^2] at the cylinder's current crank angle (one look-up).
+  void areasNow(double& forward, double& reverse) const;
   double lift(double theta_deg) const;  // [m]
 
  private:
+  void areas(double theta_deg, double& forward, double& reverse) const;
   const cyl::Cylinder& cyl_;
   ValveSpec v_;
   double open_, duration_;
-  std::vector<double> fwd_, rev_;  // over theta = -360 ... 360 step kStep
+  std::vector<double> tab_;  // (forward, reverse) pairs over phi = 0 ... Delta, step kStep
 };
 
 /// The valves of one side of a cylinder: gasdyn::Valve physics (isentropic nozzle with the

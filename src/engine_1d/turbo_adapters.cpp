@@ -42,6 +42,17 @@ double CompressorFlowMap::efficiency(double p0, double T0, double p_down, double
   return hs / work;
 }
 
+double CompressorFlowMap::temperatureRatio(double p0, double T0, double p_down, double w,
+                                           double k) const {
+  const double pr = p_down / p0;
+  if (pr > 1.0 && std::fabs(k - k_) < 1e-12) {
+    const double n = units::radpsToRpm(w > 0.0 ? w : 0.0) / std::sqrt(T0 / T_ref_);
+    const double work = work_(n, pr);
+    if (work > 1e-9) return 1.0 + work;
+  }
+  return FlowMap::temperatureRatio(p0, T0, p_down, w, k);
+}
+
 TurbineFlowMap::TurbineFlowMap(const turbo::TurbineEntry& e, const turbo::Wastegate* wg,
                                int n_speed, int n_er)
     : share_(e.share()), er_max_(6.0), R_(e.map().gas().R), has_wg_(wg != nullptr) {

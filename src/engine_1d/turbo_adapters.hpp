@@ -62,6 +62,9 @@ class CompressorFlowMap final : public gasdyn::FlowMap {
   explicit CompressorFlowMap(const turbo::Compressor& c, int n_speed = 121, int n_pr = 241);
   double massFlow(double p0_up, double T0_up, double p_down, double speed) const override;
   double efficiency(double p0_up, double T0_up, double p_down, double speed) const override;
+  /// 1 + work/(cp T0) from the map (= 1 + (pr^k - 1)/eta exactly, eta = (pr^k - 1)/work).
+  double temperatureRatio(double p0_up, double T0_up, double p_down, double speed,
+                          double k) const override;
   double maxCorrectedSpeed() const { return n_max_; }
 
  private:

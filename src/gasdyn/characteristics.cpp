@@ -25,12 +25,12 @@ FaceState closedFace(const PerfectGas& g, const EndState& s) {
 FaceState reservoirFace(const PerfectGas& gas, const EndState& s, double p0, double T0) {
   const Wave w(gas, s);
   // outflow at static p0?  (a = (p0/p)^(1/ik) = base(ub): the face is at p0 unless choked)
-  const double a = std::pow(p0 / w.p, 1.0 / w.ik);
+  const double a = std::exp2(std::log2(p0 / w.p) / w.ik);
   const double ub = w.u + w.c / w.g * (a - 1.0);
   if (ub <= 0.0) {
     const double ws = w.wSonic();
     if (-ub <= ws) {
-      const double ag = std::pow(a, 1.0 / w.g);
+      const double ag = w.pow_ig(a);
       return {w.rho * ag, ub, w.p * ag * a * a};
     }
     return outflowFace(w, ws);
@@ -46,7 +46,7 @@ FaceState reservoirFace(const PerfectGas& gas, const EndState& s, double p0, dou
   const double us = std::sqrt(2.0 * gas.gamma * gas.R * T0 / (gas.gamma + 1.0));
   if (u >= us) u = us;  // choked inflow: sonic face from the total state
   const double Tb = T0 - u * u / (2.0 * gas.cp());
-  const double pb = p0 * std::pow(Tb / T0, gas.gamma / (gas.gamma - 1.0));
+  const double pb = p0 * w.pow_hik(Tb / T0);
   return {pb / (gas.R * Tb), u, pb};
 }
 
@@ -72,7 +72,7 @@ FaceState massFlowFace(const PerfectGas& gas, const EndState& s, double mdot, do
 void stagnation(const PerfectGas& g, const FaceState& f, double& p0, double& T0) {
   const double T = f.p / (f.rho * g.R);
   T0 = T + 0.5 * f.u_in * f.u_in / g.cp();
-  p0 = f.p * std::pow(T0 / T, g.gamma / (g.gamma - 1.0));
+  p0 = f.p * ConstPow(g.gamma / (g.gamma - 1.0))(T0 / T);
 }
 
 FaceState orificeFace(const PerfectGas& gas, const EndState& s, double A_in, double A_out,

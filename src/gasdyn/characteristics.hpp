@@ -12,6 +12,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "gasdyn/gas.hpp"
 #include "gasdyn/pipe_end.hpp"
@@ -50,35 +51,40 @@ struct Supply {
 };
 
 namespace detail {
-/// Simple-wave relations of one end cell (g = (gamma-1)/2, ik = 2 gamma/(gamma-1)).
+/// Simple-wave relations of one end cell (g = (gamma-1)/2, ik = 2 gamma/(gamma-1)). The powers
+/// use ConstPow (gas.hpp): by multiplication for gamma = 1.4 (1/g = 5, ik = 7), else exp2/log2.
 struct Wave {
   double g, c, u, p, rho, A, ik;
+  ConstPow pow_ik, pow_ig, pow_hik;  // x^ik, x^(1/g), x^(ik/2) = x^(gamma/(gamma-1))
   Wave(const PerfectGas& gas, const EndState& s)
       : g(0.5 * (gas.gamma - 1.0)), c(std::sqrt(gas.gamma * s.p / s.rho)), u(s.u_in), p(s.p),
-        rho(s.rho), A(s.A), ik(2.0 * gas.gamma / (gas.gamma - 1.0)) {}
+        rho(s.rho), A(s.A), ik(2.0 * gas.gamma / (gas.gamma - 1.0)), pow_ik(ik),
+        pow_ig(1.0 / g), pow_hik(0.5 * ik) {}
   double base(double ub) const { return std::max(1.0 + g * (ub - u) / c, 1e-6); }
-  double pressure(double ub) const { return p * std::pow(base(ub), ik); }
-  double density(double ub) const { return rho * std::pow(base(ub), 1.0 / g); }  // same entropy
+  double pressure(double ub) const { return p * pow_ik(base(ub)); }
+  double density(double ub) const { return rho * pow_ig(base(ub)); }  // same entropy
   double wSonic() const { return std::max((c - g * u) / (1.0 + g), 0.0); }       // sonic outflow
   /// Outflow at speed wo >= 0: mass flow out of the pipe [kg/s] and the face total state (p0 [Pa],
-  /// T0 [K]) with two pow() calls: the face keeps the end-cell entropy, so T_b = T b^2
+  /// T0 [K]) with two powers: the face keeps the end-cell entropy, so T_b = T b^2
   /// (b = base(-wo)) and p0 = p_b (T0/T_b)^(gamma/(gamma-1)) = p (T0/T)^(gamma/(gamma-1)).
-  /// Same values as outflow(wo) + stagnation() (3 pow() calls).
+  /// Same values as outflow(wo) + stagnation() (3 powers).
   double outflowTotal(double wo, double cp, double R, double& p0, double& T0) const {
     const double b = base(-wo), T = p / (rho * R);
     T0 = T * b * b + 0.5 * wo * wo / cp;
-    p0 = p * std::pow(T0 / T, 0.5 * ik);
-    return rho * std::pow(b, 1.0 / g) * wo * A;
+    p0 = p * pow_hik(T0 / T);
+    return rho * pow_ig(b) * wo * A;
   }
-  double velocityAt(double pt) const { return u + c / g * (std::pow(pt / p, 1.0 / ik) - 1.0); }
-  /// Face state of the outflow at speed w >= 0 (one pow(): b^ik = b^(1/g) b^2).
+  double velocityAt(double pt) const {
+    return u + c / g * (std::exp2(std::log2(pt / p) / ik) - 1.0);
+  }
+  /// Face state of the outflow at speed w >= 0 (one power: b^ik = b^(1/g) b^2).
   FaceState outflow(double w) const {
-    const double b = base(-w), bg = std::pow(b, 1.0 / g);
+    const double b = base(-w), bg = pow_ig(b);
     return {rho * bg, -w, p * bg * b * b};
   }
   /// Face at rest (u_b = 0), same relation.
   FaceState atRest() const {
-    const double b = base(0.0), bg = std::pow(b, 1.0 / g);
+    const double b = base(0.0), bg = pow_ig(b);
     return {rho * bg, 0.0, p * bg * b * b};
   }
   FaceState inflow(const PerfectGas& gas, double ub, double T0) const {
@@ -87,6 +93,18 @@ struct Wave {
     return {pb / (gas.R * Tb), ub, pb};
   }
 };
+
+/// Supply of an inflow demand at face velocity ub: demand(p_b) or, if the demand also takes the
+/// wave base b (p_b = p b^ik), demand(p_b, b) -- lets a nozzle demand get
+/// (p_b/p_v)^((gamma-1)/gamma) = (p/p_v)^((gamma-1)/gamma) b^2 without a power.
+template <class Demand>
+Supply inflowDemand(const Demand& demand, const Wave& w, double ub) {
+  const double b = w.base(ub), pb = w.p * w.pow_ik(b);
+  if constexpr (std::is_invocable_v<const Demand&, double, double>)
+    return demand(pb, b);
+  else
+    return demand(pb);
+}
 
 /// Root of f increasing on [lo, hi] with f(lo) < 0 < f(hi) (Illinois / modified regula falsi).
 template <class F>
@@ -137,16 +155,15 @@ FaceState demandOutflowFace(const PerfectGas& gas, const EndState& s, Demand dem
 template <class Demand>
 FaceState demandInflowFace(const PerfectGas& gas, const EndState& s, Demand demand) {
   const detail::Wave w(gas, s);
-  auto face = [&](double ub) { return w.inflow(gas, ub, demand(w.pressure(ub)).T0); };
+  auto face = [&](double ub) { return w.inflow(gas, ub, detail::inflowDemand(demand, w, ub).T0); };
   auto f = [&](double ub) {
-    const double pb = w.pressure(ub);
-    const Supply d = demand(pb);
+    const Supply d = detail::inflowDemand(demand, w, ub);
     return w.inflow(gas, ub, d.T0).mdot_in(w.A) - d.mdot;
   };
   const double f0 = f(0.0);
   if (f0 >= 0.0) return face(0.0);
-  double us = std::sqrt(2.0 * gas.gamma * gas.R * demand(w.pressure(0.0)).T0 / (gas.gamma + 1.0));
-  us = std::sqrt(2.0 * gas.gamma * gas.R * demand(w.pressure(us)).T0 / (gas.gamma + 1.0));
+  double us = std::sqrt(2.0 * gas.gamma * gas.R * detail::inflowDemand(demand, w, 0.0).T0 / (gas.gamma + 1.0));
+  us = std::sqrt(2.0 * gas.gamma * gas.R * detail::inflowDemand(demand, w, us).T0 / (gas.gamma + 1.0));
   const double fhi = f(us);
   if (fhi <= 0.0) return face(us);  // sonic face
   return face(detail::illinois(f, 0.0, us, f0, fhi));
@@ -229,17 +246,17 @@ FaceState warmDemandInflowFace(const PerfectGas& gas, const EndState& s, Demand 
                                double& guess) {
   const detail::Wave w(gas, s);
   auto f = [&](double ub) {
-    const Supply d = demand(w.pressure(ub));
+    const Supply d = detail::inflowDemand(demand, w, ub);
     return w.inflow(gas, ub, d.T0).mdot_in(w.A) - d.mdot;
   };
   if (guess > 0.0) {
-    const double T0 = demand(w.pressure(guess)).T0;
+    const double T0 = detail::inflowDemand(demand, w, guess).T0;
     const double us = std::sqrt(2.0 * gas.gamma * gas.R * T0 / (gas.gamma + 1.0));
     if (guess < us) {
       const double x = detail::warmRoot(f, us, guess);
       if (x > 0.0 && x < us) {
         guess = x;
-        return w.inflow(gas, x, demand(w.pressure(x)).T0);
+        return w.inflow(gas, x, detail::inflowDemand(demand, w, x).T0);
       }
     }
   }

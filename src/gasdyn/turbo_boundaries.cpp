@@ -34,7 +34,7 @@ void TurbineEntry::computeFluxes(double) {
     stagnation(g, f, p0f, T0f);
     const double eta = mdot_ > 0.0 ? map_->efficiency(p0f, T0f, pout, speed_) : 0.0;
     const double pr = pout < p0f ? pout / p0f : 1.0;
-    const double T0out = T0f * (1.0 - eta * (1.0 - std::pow(pr, k)));
+    const double T0out = T0f * (1.0 - eta * (1.0 - ConstPow(k)(pr)));
     const double e_out = mdot_ * g.cp() * T0out;
     out_.addFlow(mdot_, e_out);
     power_ = -F.energy_in - e_out;
@@ -62,8 +62,7 @@ void CompressorOutlet::computeFluxes(double) {
   const double k = (g.gamma - 1.0) / g.gamma, pin = in_.p(), Tin = in_.T();
   auto supply = [&](double pb) {
     const double m = map_->massFlow(pin, Tin, pb, speed_);
-    const double eta = map_->efficiency(pin, Tin, pb, speed_);
-    return Supply{std::max(m, 0.0), Tin * (1.0 + (std::pow(pb / pin, k) - 1.0) / eta)};
+    return Supply{std::max(m, 0.0), Tin * map_->temperatureRatio(pin, Tin, pb, speed_, k)};
   };
   power_ = 0.0;
   const double pb0 = closedFacePressure(g, s);

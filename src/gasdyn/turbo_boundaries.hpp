@@ -31,6 +31,13 @@ class FlowMap {
   virtual double efficiency(double p0_up, double T0_up, double p_down, double speed) const {
     return 1.0;
   }
+  /// Compressor total-temperature ratio T0_out/T0_up = 1 + ((p_down/p0_up)^k - 1)/eta [-]
+  /// (k = (gamma-1)/gamma of the pipe gas). A map that knows its specific work may override it
+  /// with the same value obtained without a power.
+  virtual double temperatureRatio(double p0_up, double T0_up, double p_down, double speed,
+                                  double k) const {
+    return 1.0 + (ConstPow(k)(p_down / p0_up) - 1.0) / efficiency(p0_up, T0_up, p_down, speed);
+  }
 };
 
 class TurbineEntry final : public Boundary {

@@ -230,3 +230,25 @@ TEST_P(BothSolvers, PipeOrificeChokedFlowAndConservation) {
   EXPECT_NEAR(net.totalMass() + net.reservoirMassIn(), M0, 1e-13 * M0);
   EXPECT_NEAR(net.totalEnergy() + net.reservoirEnergyIn(), E0, 1e-13 * E0);
 }
+
+// ConstPow (isentropic powers): multiplication for gamma = 1.4 exponents, exp2/log2 otherwise;
+// both at round-off level against std::pow. Nozzle flow with the caller's t = pr^k is the same
+// as the direct one.
+TEST(ConstPow, MatchesStdPowAtRoundOff) {
+  for (double gamma : {1.4, 1.33, 1.3}) {
+    const double g = 0.5 * (gamma - 1.0);
+    for (double e : {1.0 / g, 2.0 * gamma / (gamma - 1.0), gamma / (gamma - 1.0),
+                     (gamma - 1.0) / gamma, 1.0 / (2.0 * gamma / (gamma - 1.0))}) {
+      const ConstPow pw(e);
+      for (double x = 0.05; x < 3.0; x += 0.0173)
+        EXPECT_NEAR(pw(x), std::pow(x, e), 2e-15 * std::pow(x, e) * (1.0 + std::fabs(e * std::log2(x))))
+            << "gamma " << gamma << " e " << e << " x " << x;
+    }
+  }
+  const PerfectGas ex{1.33, 287.0};
+  for (double pr = 0.3; pr < 1.0; pr += 0.01) {
+    const double t = std::pow(pr, (ex.gamma - 1.0) / ex.gamma);
+    EXPECT_NEAR(nozzleMassFlowT(ex, 1e-3, 2e5, 800.0, 2e5 * pr, t),
+                nozzleMassFlow(ex, 1e-3, 2e5, 800.0, 2e5 * pr), 1e-14);
+  }
+}
