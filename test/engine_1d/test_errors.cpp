@@ -36,7 +36,7 @@ TEST(Engine1DErrors, OutOfRangeValueNamesFileAndKey) {
 }
 
 TEST(Engine1DErrors, UnknownKeyAndBadSolverAreRejected) {
-  const std::string f = writeVariant("tvd_mesh_factor: 2.0", "tvd_mesh_factor: 2.0\n  tvd_mesh_factr: 3", "typo");
+  const std::string f = writeVariant("  firing_order:", "  tvd_mesh_factr: 3\n  firing_order:", "typo");
   try {
     Engine1DParams::load(repoRoot(), f);
     FAIL() << "no InputError";
