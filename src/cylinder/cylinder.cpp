@@ -239,8 +239,6 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
   if (heat_transfer_on_) {
     const double Tm = p0 * V0 / mR0;
     const double cm = crank_.meanPistonSpeed(omega);
-    const bool comb = closed_ && combustion_started_;
-    const double pmot = comb ? pr_ * std::exp(nr_ * std::log(Vr_ / V0)) : p0;
     const Geometry& G = crank_.geometry();
     double h;
     if (P_.woschni.hohenberg) {
@@ -248,6 +246,8 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
       h = hohenberg_pre_ * std::exp(-0.06 * std::log(V0) + 0.8 * std::log(p0 * 1e-5) -
                                     0.4 * std::log(Tm) + 0.8 * std::log(cm + 1.4));
     } else {
+      const bool comb = closed_ && combustion_started_;
+      const double pmot = comb ? pr_ * std::exp(nr_ * std::log(Vr_ / V0)) : p0;
       const double w = P_.woschni.velocity(!closed_, comb, cm, G.bore_m, G.stroke_m,
                                            crank_.displacement(), Tr_, pr_, Vr_, p0, pmot);
       // woschniCoefficient() with the bore factor precomputed: C0 B^−0.2 (p[kPa] w)^0.8 T^−0.55
