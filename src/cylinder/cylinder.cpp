@@ -200,8 +200,13 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
     deferred_kg_ = demand - dm_fb;
     if (dm_fb > 0.0) {
       // Air taken into the burned zone: λ_flame·AFR per kg, but never more than the unburned
-      // zone can spare for its remaining vapour (rich limit: stoichiometric).
-      const double spare = mu_[kAir] / std::max(mu_[kFuelVap] + deferred_kg_, dm_fb);
+      // zone can spare for all the fuel of this cycle still to burn — vapour, deferred demand
+      // and fuel not yet injected (rich limit: stoichiometric). Counting only the present
+      // vapour let the early flame take the air of the late-injected fuel, which then waited
+      // (air-limited) until the zones merged at EVO and burned there in one step.
+      const double to_burn =
+          std::max(mu_[kFuelVap] + deferred_kg_, fuel_cycle_kg_ - acc_.fuel_burned_kg);
+      const double spare = mu_[kAir] / std::max(to_burn, dm_fb);
       const double dm_air = dm_fb * std::max(afr, std::min(afr * P_.flame_lambda, spare));
       const double q = (P_.fuel.lhv_J_kg + P_.fuel.hfg_J_kg) * dm_fb;
       if (closed_ && !flowing && !zones_merged_) {

@@ -216,3 +216,30 @@ TEST(Rig, CostPerCylinderStep) {
     EXPECT_NEAR(rig2.cylinder().lastCycle().imep_net_Pa / rig.cylinder().lastCycle().imep_net_Pa, 1.0, 1e-12);
   }
 }
+
+TEST(Rig, LowLambdaFullLoadFuelBurnsBeforeExhaustValveOpening) {
+  // Smoke-limit corner (lambda ~1.25 < flame_lambda 1.5, long main injection at full-load fuel):
+  // the flame must leave the unburned zone stoichiometric air for the fuel still to be injected.
+  // Regression: the air reserve once counted only the vapour present, so late-injected fuel
+  // waited air-limited until the zones merged at EVO and burned there in one step (in this rig
+  // case 4.2 % of the fuel: 0.958 burned at EVO before the fix, 1.000 after it).
+  RigParams rp;
+  CylinderParams cp = test::loadParams(&rp);
+  for (double& d : cp.diffusion_tail_deg) d *= 0.5;  // fast diffusion burn: flame takes air early
+  cp.finalize();
+  rp.speed_rpm = 1100.0;
+  rp.fuel_per_cycle_kg = 137e-6;
+  rp.p_intake_Pa = 2.25e5;
+  rp.p_exhaust_Pa = 2.1e5;
+  SingleCylinderRig rig(cp, rp);
+  rig.runCycles(4);
+  Cylinder& c = rig.cylinder();
+  const int cycle = c.cyclesCompleted();
+  while (c.crankAngle_deg() < cp.evo_deg - 0.5 || c.crankAngle_deg() > cp.evo_deg)
+    rig.step();
+  ASSERT_EQ(c.cyclesCompleted(), cycle);
+  const double lambda = c.lastCycle().lambda;
+  EXPECT_GT(lambda, 1.1);
+  EXPECT_LT(lambda, cp.flame_lambda);  // the case under test: global air excess below the flame's
+  EXPECT_GT(c.fuelBurnedThisCycle_kg() / rp.fuel_per_cycle_kg, 0.995);
+}

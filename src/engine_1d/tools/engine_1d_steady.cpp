@@ -114,7 +114,8 @@ int main(int argc, char** argv) {
     csv << "speed_rpm,load,torque_req_Nm,torque_Nm,bsfc_g_kWh,bsfc_ref_g_kWh,bsfc_err_pct,"
            "fuel_kg_s,fuel_ref_kg_s,air_kg_s,lambda,boost_Pa,boost_target_Pa,T_im_K,p3_Pa,T3_K,"
            "pmax_bar,turbo_krpm,wastegate,nox_g_kWh,exhaust_T_K,back_pressure_Pa,smoke_limited,"
-           "converged,sim_s,cpu_s\n";
+           "converged,sim_s,cpu_s,imep_gross_bar,pmep_bar,fmep_bar,eta_ind_gross,ca50_deg,"
+           "ignition_delay_deg\n";
     const double dt = 0.02;
     int last_speed = -1, n_conv = 0;
     double sum_abs = 0, max_abs = 0, cpu_all = 0, sim_all = 0;
@@ -176,7 +177,8 @@ int main(int argc, char** argv) {
               &Engine1DOutputs::boost_pressure_Pa, &Engine1DOutputs::intake_manifold_T_K,
               &Engine1DOutputs::turbine_inlet_p_Pa, &Engine1DOutputs::turbine_inlet_T_K,
               &Engine1DOutputs::turbo_speed_rad_s, &Engine1DOutputs::wastegate_opening,
-              &Engine1DOutputs::nox_mass_flow_kg_s, &Engine1DOutputs::exhaust_T_K})
+              &Engine1DOutputs::nox_mass_flow_kg_s, &Engine1DOutputs::exhaust_T_K,
+              &Engine1DOutputs::friction_torque_Nm})
           mean.*f = av(f);
       }
       o = &mean;
@@ -187,6 +189,16 @@ int main(int argc, char** argv) {
       n_conv += conv;
       sum_abs += std::fabs(err);
       max_abs = std::max(max_abs, std::fabs(err));
+      // Loss split and combustion phasing: mean over the cylinders' last complete cycles.
+      double imep_g = 0, pmep = 0, eta_g = 0, ca50 = 0, delay = 0;
+      const int ncyl = 6;
+      for (int c = 0; c < ncyl; ++c) {
+        const auto& r = eng.assembly().cylinder(c).lastCycle();
+        imep_g += r.imep_gross_Pa / ncyl, pmep += r.pmep_Pa / ncyl, eta_g += r.eta_ind_gross / ncyl;
+        ca50 += r.ca50_deg / ncyl, delay += r.ignition_delay_main_deg / ncyl;
+      }
+      const double Vd_m3 = ncyl * hbt::cyl::SliderCrank(eng.assembly().cylinder(0).params().geometry).displacement();
+      const double fmep = o->friction_torque_Nm * 4.0 * M_PI / Vd_m3;
       csv << q.rpm << "," << q.load << "," << treq << "," << Tb << "," << bsfc << "," << bref << ","
           << err << "," << fuel << "," << fref << "," << o->air_mass_flow_kg_s << "," << o->lambda
           << "," << o->boost_pressure_Pa << "," << o->boost_target_Pa << ","
@@ -194,7 +206,8 @@ int main(int argc, char** argv) {
           << "," << o->peak_cylinder_pressure_Pa / 1e5 << "," << o->turbo_speed_rad_s / kRpm / 1e3
           << "," << o->wastegate_opening << "," << o->nox_mass_flow_kg_s / (Tb * w) * 3.6e9 << ","
           << o->exhaust_T_K << "," << o->back_pressure_Pa << "," << o->smoke_limited << ","
-          << conv << "," << t << "," << cpu << "\n";
+          << conv << "," << t << "," << cpu << "," << imep_g / 1e5 << "," << pmep / 1e5 << ","
+          << fmep / 1e5 << "," << eta_g << "," << ca50 << "," << delay << "\n";
       csv.flush();
       std::printf("%6.0f rpm %5.0f Nm (%3.0f%%): Tb %6.1f BSFC %6.1f ref %6.1f err %+5.1f%% lambda %4.2f "
                   "boost %4.2f bar pmax %5.1f bar NOx %5.2f g/kWh %s %.1f s cpu %.2f s\n",
