@@ -2,14 +2,18 @@
 // with the firing pulses (brake torque, flows, pressures).
 //
 // The cycle is split in kBins bins of 720/kBins deg. Each bin stores the time integrals
-// I_c = integral x_c dt of every channel and its duration; impulses (a mass released at one
-// instant, e.g. fuel at injection, NOx at exhaust-valve opening) are added to I_c directly.
+// I_c = integral x_c dt of every channel and its duration; a step (rates x held over dt,
+// covering dtheta) is split over the bins it spans in proportion to its crank angle, so a bin
+// holds exactly its 720/kBins deg whatever the step length. Impulses (addImpulse) are added to
+// the current bin's I_c directly (the engine passes per-step amounts as rates instead: an
+// impulse at a step end phase-locks with the bins when steps approach the bin width).
 // The window is exactly 720 deg: the current (partial, a deg filled) bin, the kBins-1 complete
 // bins before it and the fraction (1 - a/bin) of the oldest bin:
 //   <x_c> = sum_bins w_b I_c,b / sum_bins w_b dt_b,   w = 1 except the oldest bin
-// i.e. the cycle mean at constant speed (time mean = crank-angle mean; impulses in the oldest
-// bin are faded out linearly, so the mean does not jump when an injection leaves the window),
-// a moving average otherwise. Fixed storage, no allocation after construction.
+// i.e. the cycle mean at constant speed (time mean = crank-angle mean; exact up to the rate
+// variation inside the oldest bin, which is faded out linearly), a moving average otherwise.
+// mean() is O(channels) (running sums, re-summed exactly once per ring). Fixed storage, no
+// allocation after construction.
 #pragma once
 #include <array>
 #include <cmath>
@@ -21,6 +25,7 @@ class CycleWindow {
  public:
   void reset() {
     for (auto& b : bins_) b = Bin{};
+    sum_ = Bin{};
     cur_ = 0;
     angle_in_bin_ = 0.0;
     filled_ = 0;
@@ -28,33 +33,32 @@ class CycleWindow {
   /// Adds a step of dt [s] covering dtheta [deg] with channel values x (rates).
   template <class Values>
   void add(double dt, double dtheta, const Values& x) {
-    Bin& b = bins_[cur_];
-    b.dt += dt;
-    for (int c = 0; c < kChannels; ++c) b.I[c] += x[c] * dt;
-    angle_in_bin_ += dtheta;
-    while (angle_in_bin_ >= kBinDeg) {
-      angle_in_bin_ -= kBinDeg;
-      cur_ = (cur_ + 1) % kStore;
-      if (filled_ < kBins) ++filled_;
-      bins_[cur_] = Bin{};
+    // a step is split over the bins it spans in proportion to its crank angle (steps may be
+    // as long as or longer than a bin), so every bin holds exactly its 720/kBins deg
+    double rem = dtheta;
+    while (rem > 0.0 && angle_in_bin_ + rem >= kBinDeg) {
+      const double part = kBinDeg - angle_in_bin_;
+      accumulate(dt * part / dtheta, x);
+      rem -= part;
+      angle_in_bin_ = 0.0;
+      nextBin();
     }
+    accumulate(dtheta > 0.0 ? dt * rem / dtheta : dt, x);
+    angle_in_bin_ += rem;
   }
   /// Impulse: adds amount q (integral units) to channel c of the current bin.
-  void addImpulse(int c, double q) { bins_[cur_].I[c] += q; }
-  /// Cycle means of every channel (0 if nothing accumulated).
+  void addImpulse(int c, double q) {
+    bins_[cur_].I[c] += q;
+    sum_.I[c] += q;
+  }
+  /// Cycle means of every channel (0 if nothing accumulated); O(kChannels): running sums over
+  /// all stored bins minus the part of the oldest bin outside the window.
   template <class Out>
   void mean(Out& out) const {
-    double T = 0.0;
-    std::array<double, kChannels> s{};
-    const int oldest = (cur_ + 1) % kStore;
-    const double w_old = 1.0 - angle_in_bin_ / kBinDeg;
-    for (int k = 0; k < kStore; ++k) {
-      const Bin& b = bins_[k];
-      const double w = k == oldest ? w_old : 1.0;
-      T += w * b.dt;
-      for (int c = 0; c < kChannels; ++c) s[c] += w * b.I[c];
-    }
-    for (int c = 0; c < kChannels; ++c) out[c] = T > 0.0 ? s[c] / T : 0.0;
+    const Bin& o = bins_[(cur_ + 1) % kStore];
+    const double cut = angle_in_bin_ / kBinDeg;  // outside fraction of the oldest bin
+    const double T = sum_.dt - cut * o.dt;
+    for (int c = 0; c < kChannels; ++c) out[c] = T > 0.0 ? (sum_.I[c] - cut * o.I[c]) / T : 0.0;
   }
   bool fullCycle() const { return filled_ >= kBins; }
 
@@ -65,7 +69,36 @@ class CycleWindow {
     double dt = 0.0;
     std::array<double, kChannels> I{};
   };
+  template <class Values>
+  void accumulate(double f, const Values& x) {
+    Bin& b = bins_[cur_];
+    b.dt += f;
+    sum_.dt += f;
+    for (int c = 0; c < kChannels; ++c) {
+      const double q = x[c] * f;
+      b.I[c] += q;
+      sum_.I[c] += q;
+    }
+  }
+  void nextBin() {
+    cur_ = (cur_ + 1) % kStore;
+    if (filled_ < kBins) ++filled_;
+    Bin& b = bins_[cur_];
+    if (cur_ == 0) {  // once per ring: exact re-summation (no drift of the running sums)
+      b = Bin{};
+      sum_ = Bin{};
+      for (const Bin& k : bins_) {
+        sum_.dt += k.dt;
+        for (int c = 0; c < kChannels; ++c) sum_.I[c] += k.I[c];
+      }
+      return;
+    }
+    sum_.dt -= b.dt;
+    for (int c = 0; c < kChannels; ++c) sum_.I[c] -= b.I[c];
+    b = Bin{};
+  }
   std::array<Bin, kStore> bins_{};
+  Bin sum_{};
   int cur_ = 0, filled_ = 0;
   double angle_in_bin_ = 0.0;
 };

@@ -12,7 +12,8 @@ namespace {
 void addPipe(ParamSet& ps, const std::string& key, PipeSpec& p, const std::string& what) {
   ps.add(key + "/length_m", p.length_m, "m", 0.02, 10.0, what + ": length");
   ps.add(key + "/diameter_m", p.diameter_m, "m", 0.005, 0.5, what + ": inner diameter");
-  ps.add(key + "/cells", p.cells, "-", 2, 200, what + ": FSM cells (TVD x tvd_mesh_factor)");
+  ps.add(key + "/cells", p.cells, "-", 2, 200, what + ": base cells (TVD x tvd_mesh_factor)");
+  ps.add(key + "/fsm_cells", p.fsm_cells, "-", 0, 200, what + ": FSM cells (0: = cells)");
 }
 
 void addValve(ParamSet& ps, const std::string& key, ValveSpec& v, const std::string& what) {
@@ -74,8 +75,16 @@ void Engine1DConfig::declare(ParamSet& ps) {
   ps.add("control/period_s", controller_period_s, "s", 0.0, 1.0, "0 = every macro step");
   ps.add("numerics/coupling_max_deg", coupling_max_deg, "deg", 0.1, 10.0,
          "largest crank-angle increment of one coupled step");
+  ps.add("numerics/coupling_cylinder_cfl", coupling_cylinder_cfl, "-", 0.0, 2.0,
+         "> 0: coupled step <= cfl V_cyl/(c_cyl sum A_valve,eff)");
+  ps.add("numerics/valve_area_midstep", valve_area_midstep,
+         "valve areas at the mid crank angle of the coupled step (else at its start)");
+  ps.add("numerics/implicit_volumes", implicit_volumes,
+         "open ends to finite volumes linearised-implicit in the volume pressure");
   ps.add("numerics/cylinder_substep_deg", cylinder_substep_deg, "deg", 0.0, 10.0,
          "> 0 overrides cylinder/numerics/max_substep_deg");
+  ps.add("numerics/cylinder_substep_open_deg", cylinder_substep_open_deg, "deg", 0.0, 10.0,
+         "cylinder sub-step while a valve is open (EVO..IVC) if larger than cylinder_substep_deg");
   ps.add("numerics/nox_interval_deg", nox_interval_deg, "deg", 0.0, 20.0,
          "> 0 overrides cylinder/nox/interval_deg");
   ps.add("numerics/initial_turbo_speed_rpm", initial_turbo_speed_rpm, "rpm", 0.0, 2e5,
@@ -163,12 +172,6 @@ void Engine1DParams::validate() const {
   if (e.boost_pressure_ratio.size() != e.boost_speed_rpm.size() * e.boost_load.size())
     throw InputError(f, "engine_1d/control/boost_pressure_ratio",
                      "needs speeds x loads values (row-major)");
-  if (e.cylinder_substep_deg > 0.0 && e.cylinder_substep_deg < e.coupling_max_deg)
-    throw InputError(f, "engine_1d/numerics/cylinder_substep_deg",
-                     "must be >= numerics/coupling_max_deg (one cylinder step per coupled step)");
-  if (e.cylinder_substep_deg <= 0.0 && cylinder.max_substep_deg < e.coupling_max_deg)
-    throw InputError(f, "engine_1d/numerics/coupling_max_deg",
-                     "exceeds cylinder/numerics/max_substep_deg: set numerics/cylinder_substep_deg");
   if (cylinder.geometry.bore_m <= 0.0)
     throw InputError(f, "cylinder/geometry/bore_m", "must be > 0");
 }

@@ -22,7 +22,8 @@ namespace hbt::engine1d {
 struct PipeSpec {
   double length_m = 0.3;
   double diameter_m = 0.05;
-  int cells = 2;
+  int cells = 2;      // base mesh: the TVD reference runs cells x tvd_mesh_factor
+  int fsm_cells = 0;  // FSM mesh (> 0); 0: the FSM runs `cells`
 };
 
 struct ValveSpec {
@@ -70,7 +71,12 @@ struct Engine1DConfig {
   double controller_period_s = 0.0;      // 0: controllers act every macro step
   // Numerics
   double coupling_max_deg = 2.0;         // largest crank-angle step of the coupled step
+  double coupling_cylinder_cfl = 0.0;    // > 0: dt <= cfl V_cyl/(c_cyl sum A_valve,eff) (explicit
+                                         // cylinder-as-reservoir coupling limit)
+  bool valve_area_midstep = false;       // valve areas at the coupled step's mid crank angle
+  bool implicit_volumes = false;         // open ends to plenum/collectors implicit (gasdyn)
   double cylinder_substep_deg = 0.0;     // > 0 overrides cylinder/numerics/max_substep_deg
+  double cylinder_substep_open_deg = 0.0;  // sub-step while a valve is open (EVO..IVC), if larger
   double nox_interval_deg = 0.0;         // > 0 overrides cylinder/nox/interval_deg
   double friction_to_coolant = 0.5;      // share of friction power rejected to the coolant
   // Calibration of the cylinder model for this assembly (applied on top of cylinder/*):

@@ -46,8 +46,8 @@ gasdyn::Pipe& EngineAssembly::pipe(gasdyn::Network& n, const std::string& name,
   c.name = name;
   c.length = s.length_m;
   const bool tvd = P_.engine.solver == "tvd";
-  c.cells = tvd ? std::max(1, static_cast<int>(std::lround(s.cells * P_.engine.tvd_mesh_factor)))
-                : s.cells;
+  c.cells = tvd ? std::max(2, static_cast<int>(std::lround(s.cells * P_.engine.tvd_mesh_factor)))
+                : (s.fsm_cells > 0 ? s.fsm_cells : s.cells);
   c.diameter_left = c.diameter_right = s.diameter_m;
   c.friction_darcy = friction;
   c.solver = tvd ? gasdyn::SolverKind::TVD : gasdyn::SolverKind::FSM;
@@ -61,7 +61,11 @@ gasdyn::Pipe& EngineAssembly::pipe(gasdyn::Network& n, const std::string& name,
 void EngineAssembly::build(const Initial& in) {
   const Engine1DConfig& E = P_.engine;
   cyl::CylinderParams cp = P_.cylinder;
-  if (E.cylinder_substep_deg > 0.0) cp.max_substep_deg = E.cylinder_substep_deg;
+  // The assembly sub-steps the cylinders (coupledStep) at <= substep_deg_; the cylinder's own
+  // limit is set above that so it never splits a sub-step again (round-off at exact multiples).
+  substep_deg_ = E.cylinder_substep_deg > 0.0 ? E.cylinder_substep_deg : cp.max_substep_deg;
+  substep_open_deg_ = std::max(substep_deg_, E.cylinder_substep_open_deg);
+  cp.max_substep_deg = 2.0 * substep_open_deg_;
   if (E.nox_interval_deg > 0.0) cp.nox_interval_deg = E.nox_interval_deg;
   for (int j = 0; j < 6; ++j) {
     const int c = static_cast<int>(E.firing_order[j]) - 1;
@@ -79,6 +83,8 @@ void EngineAssembly::build(const Initial& in) {
   }
   shaft_.setOmega(in.turbo_rad_s);
   T_amb_ = in.T_amb;
+  intake_.setImplicitVolumes(E.implicit_volumes);
+  exhaust_.setImplicitVolumes(E.implicit_volumes);
 
   // --- intake network ---
   filter_ = &intake_.addReservoir("air_filter_box", in.p_amb, in.T_amb);
@@ -96,6 +102,7 @@ void EngineAssembly::build(const Initial& in) {
     intake_.connect(*run_in_[k], End::Left, *plenum_);
     res_in_[k] = &intake_.addReservoir("cyl" + num(k) + "_intake_side", in.p_im, in.T_im);
     auto area = std::make_shared<CrankValveArea>(*cyl_[k], E.intake_valve, cp.ivo_deg, cp.ivc_deg, false);
+    area_in_[k] = area.get();
     intake_.add<CylinderValve>("intake_valves_" + num(k), *res_in_[k], gasdyn::rightEnd(*run_in_[k]), area);
   }
   // --- exhaust network ---
@@ -112,6 +119,7 @@ void EngineAssembly::build(const Initial& in) {
     run_ex_[k] = &pipe(exhaust_, "exhaust_runner_" + num(k), E.exhaust_runner, E.exhaust_friction_darcy, true);
     res_ex_[k] = &exhaust_.addReservoir("cyl" + num(k) + "_exhaust_side", in.p3, in.T3);
     auto area = std::make_shared<CrankValveArea>(*cyl_[k], E.exhaust_valve, cp.evo_deg, cp.evc_deg, true);
+    area_ex_[k] = area.get();
     exhaust_.add<CylinderValve>("exhaust_valves_" + num(k), *res_ex_[k], gasdyn::leftEnd(*run_ex_[k]), area);
     exhaust_.connect(*run_ex_[k], End::Right, *junction_[k < 3 ? 0 : 1]);
   }
@@ -176,15 +184,14 @@ void EngineAssembly::advance(double interval, double omega) {
     throw ModelDivergence("engine_1d", "crank speed", "must be finite and > 0");
   fric_torque_ = 0.0;
   for (const auto& c : cyl_) fric_torque_ += c->frictionTorque_Nm(omega);
-  const double dt_ang = P_.engine.coupling_max_deg * kDeg / omega;
   double remaining = interval;
   while (remaining > 0.0) {
-    const double dtmax = std::min({intake_.stableDt(), exhaust_.stableDt(), dt_ang});
+    const double dtmax = stableDt(omega);
     if (!(dtmax > 1e-9)) {
-      std::string a, b;
-      const double di = intake_.stableDt(&a), de = exhaust_.stableDt(&b);
-      throw ModelDivergence(di < de ? a : b, "time step",
-                            "stable step " + std::to_string(std::min(di, de)) + " s collapsed");
+      std::string who;
+      stableDt(omega, &who);
+      throw ModelDivergence(who, "time step",
+                            "stable step " + std::to_string(dtmax) + " s collapsed");
     }
     const double n = std::max(1.0, std::ceil(remaining / dtmax * (1.0 - 1e-12)));
     const double dt = n <= 1.0 ? remaining : remaining / n;
@@ -199,11 +206,48 @@ void EngineAssembly::advance(double interval, double omega) {
   }
 }
 
+double EngineAssembly::stableDt(double omega, std::string* limiter) const {
+  const double dt_ang = P_.engine.coupling_max_deg * kDeg / omega;
+  if (!limiter) return std::min({intake_.stableDt(), exhaust_.stableDt(), dt_ang, cylinderDt()});
+  std::string a, b;
+  const double di = intake_.stableDt(&a), de = exhaust_.stableDt(&b), dc = cylinderDt();
+  const double dt = std::min({di, de, dt_ang, dc});
+  *limiter = dt == di ? a : dt == de ? b : dt == dt_ang ? "crank-angle cap" : "cylinder valves";
+  return dt;
+}
+
+double EngineAssembly::cylinderDt() const {
+  // Each cylinder is seen by its valves as a reservoir frozen over the coupled step (explicit
+  // coupling): like a gasdyn volume, its filling/emptying mode dp/dt ~ -(c^2/V) sum A_eff/c p
+  // is stable for dt <= V/(c sum A_eff). A_eff: the larger of the two directions' effective
+  // valve areas; c from the exhaust gas constants (gamma 1.33: c within ~3 % of the mixture's).
+  const double cfl = P_.engine.coupling_cylinder_cfl;
+  if (!(cfl > 0.0)) return std::numeric_limits<double>::infinity();
+  const gasdyn::PerfectGas& g = exhaust_.gas();
+  double dt = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 6; ++k) {
+    double fi, ri, fe, re;
+    const double th = cyl_[k]->crankAngle_deg();
+    area_in_[k]->areasAt(th, fi, ri);
+    area_ex_[k]->areasAt(th, fe, re);
+    const double A = std::max(fi, ri) + std::max(fe, re);
+    if (A <= 0.0) continue;
+    const double c = std::sqrt(g.gamma * g.R * cyl_[k]->temperature_K());
+    dt = std::min(dt, cfl * cyl_[k]->volume_m3() / (c * A));
+  }
+  return dt;
+}
+
 void EngineAssembly::coupledStep(double dt, double omega) {
   for (int k = 0; k < 6; ++k) {
     const double p = cyl_[k]->pressure_Pa(), T = cyl_[k]->temperature_K();
     res_in_[k]->setReservoirState(p, T);
     res_ex_[k]->setReservoirState(p, T);
+  }
+  const double lead = P_.engine.valve_area_midstep ? 0.5 * omega * dt / kDeg : 0.0;
+  for (int k = 0; k < 6; ++k) {
+    area_in_[k]->setLead(lead);
+    area_ex_[k]->setLead(lead);
   }
   const double wtc = shaft_.omega();
   comp_->setSpeed(wtc);
@@ -214,6 +258,10 @@ void EngineAssembly::coupledStep(double dt, double omega) {
 
   std::array<double, kNumChannels> x{};
   double work = 0.0, wall = 0.0, fuel = 0.0, nox = 0.0;
+  const double dth = omega * dt / kDeg;
+  const int nsub_closed = std::max(1, static_cast<int>(std::ceil(dth / substep_deg_ - 1e-9)));
+  const int nsub_open = std::max(1, static_cast<int>(std::ceil(dth / substep_open_deg_ - 1e-9)));
+  const double ivc = P_.cylinder.ivc_deg, evo = P_.cylinder.evo_deg;
   for (int k = 0; k < 6; ++k) {
     cyl::Cylinder& c = *cyl_[k];
     cyl::PortFlows pf;
@@ -248,9 +296,18 @@ void EngineAssembly::coupledStep(double dt, double omega) {
       x[kBankOut0 + bank] -= me;
       x[kBankBurned0 + bank] -= me * xbc;
     }
-    totals_.intake_enthalpy_J += pf.intake.Hdot_W * dt;
-    totals_.exhaust_enthalpy_J -= pf.exhaust.Hdot_W * dt;
-    c.advance(dt, omega, pf);
+    // cylinder sub-steps of <= cylinder_substep_deg with the port mass flows of this coupled
+    // step; outflows leave at the cylinder's current specific enthalpy of each sub-step
+    const double th = c.crankAngle_deg();
+    const int nsub = th >= ivc && th < evo ? nsub_closed : nsub_open;
+    const double dts = dt / nsub;
+    for (int j = 0; j < nsub; ++j) {
+      if (j > 0 && mi < 0.0) pf.intake.Hdot_W = mi * c.specificEnthalpy_J_kg();
+      if (j > 0 && me < 0.0) pf.exhaust.Hdot_W = me * c.specificEnthalpy_J_kg();
+      totals_.intake_enthalpy_J += pf.intake.Hdot_W * dts;
+      totals_.exhaust_enthalpy_J -= pf.exhaust.Hdot_W * dts;
+      c.advance(dts, omega, pf);
+    }
 
     const int cycles = c.cyclesCompleted();
     double dW, dQ;
@@ -301,10 +358,12 @@ void EngineAssembly::coupledStep(double dt, double omega) {
   const int n0 = turb_pipe_[0]->cells() - 1, n1 = turb_pipe_[1]->cells() - 1;
   x[kP3] = 0.5 * (turb_pipe_[0]->p(n0) + turb_pipe_[1]->p(n1));
   x[kT3] = 0.5 * (turb_pipe_[0]->T(n0) + turb_pipe_[1]->T(n1));
+  // fuel injected, wall heat and NOx of this step as rates over the step (the window splits a
+  // step over its bins by crank angle; impulses at the step end would phase-lock with the bins)
+  x[kFuel] = fuel / dt;
+  x[kWallHeat] = wall / dt;
+  x[kNox] = nox / dt;
   window_.add(dt, omega * dt / kDeg, x);
-  window_.addImpulse(kFuel, fuel);
-  window_.addImpulse(kWallHeat, wall);
-  window_.addImpulse(kNox, nox);
   t_ += dt;
   ++steps_;
 }

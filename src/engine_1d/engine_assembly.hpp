@@ -15,10 +15,12 @@
 //
 // Coupled step of length dt (explicit, first order in the coupling; the cylinder state is
 // frozen during one network step):
-//   dt = min(CFL step of both networks, coupling_max_deg/omega)
+//   dt = min(CFL step of both networks, coupling_max_deg/omega,
+//            coupling_cylinder_cfl min_k V_k/(c_k sum A_valve,eff,k))   (cylinderDt())
 //   1. every cylinder's p, T -> its two valve reservoirs; turbo speed -> turbomachine boundaries
 //   2. both networks advance one step (valve fluxes from the pipe end states at t)
-//   3. each cylinder advances by dt with the port flows it received: mdot_k = -pipe end flux,
+//   3. each cylinder advances by dt (sub-steps of <= cylinder_substep_deg; outflow enthalpy
+//      re-evaluated per sub-step) with the port flows it received: mdot_k = -pipe end flux,
 //      inflow enthalpy mdot h_cyl(T0, x_b) with T0 = E/(mdot cp_pipe) from the face energy flux,
 //      outflow mdot h_cyl (cylinder mixture); x_b of back flows: intake runners keep the mass
 //      pushed back at IVO (buffer), exhaust back flow takes the bank's mean burned fraction
@@ -83,6 +85,9 @@ class EngineAssembly {
 
   /// Advances by `interval` [s] at crank speed omega [rad/s] (many coupled steps).
   void advance(double interval, double omega);
+  /// Largest coupled step [s] at omega [rad/s] from the current state; `limiter` (if given,
+  /// allocates): the limiting pipe/volume/boundary, "crank-angle cap" or "cylinder valves".
+  double stableDt(double omega, std::string* limiter = nullptr) const;
 
   // --- inputs between steps ---
   void setFuelPerCycle(double m_kg);
@@ -117,6 +122,7 @@ class EngineAssembly {
  private:
   void build(const Initial& init);
   void coupledStep(double dt, double omega);
+  double cylinderDt() const;  // explicit cylinder/valve coupling limit [s] (inf: off)
   gasdyn::Pipe& pipe(gasdyn::Network& n, const std::string& name, const PipeSpec& s,
                      double friction, bool hot);
 
@@ -130,6 +136,7 @@ class EngineAssembly {
   gasdyn::Volume *filter_ = nullptr, *plenum_ = nullptr, *turb_out_ = nullptr, *back_ = nullptr;
   std::array<gasdyn::Volume*, 2> junction_{};
   std::array<gasdyn::Volume*, 6> res_in_{}, res_ex_{};
+  std::array<CrankValveArea*, 6> area_in_{}, area_ex_{};
   gasdyn::Pipe *comp_pipe_ = nullptr, *cac_pipe_ = nullptr, *down_pipe_ = nullptr;
   std::array<gasdyn::Pipe*, 6> run_in_{}, run_ex_{};
   std::array<gasdyn::Pipe*, 2> turb_pipe_{};
@@ -147,6 +154,8 @@ class EngineAssembly {
   EnergyTotals totals_;
   double fric_torque_ = 0.0, t_ = 0.0, T_amb_ = 298.15, cp_in_ = 1004.5, cp_ex_ = 1160.0;
   double xb_bank_[2] = {0.3, 0.3};
+  double substep_deg_ = 2.0;       // cylinder sub-step, valves closed (IVC..EVO) [deg crank]
+  double substep_open_deg_ = 2.0;  // cylinder sub-step, a valve open [deg crank]
   long steps_ = 0;
 };
 

@@ -37,7 +37,7 @@ double CrankValveArea::lift(double th) const {
 }
 
 void CrankValveArea::areas(double th, double& fwd, double& rev) const {
-  double phi = th - open_;  // th in [-360, 360), open_ in [-360, 720): two wraps at most
+  double phi = th - open_;  // th in [-360, 370) (incl. a lead), open_ in [-360, 720)
   if (phi < 0.0) phi += 720.0;
   if (phi < 0.0) phi += 720.0;
   if (phi >= 720.0) phi -= 720.0;
@@ -60,7 +60,7 @@ double CrankValveArea::areaAt(double th, bool forward) const {
 }
 
 void CrankValveArea::areasNow(double& forward, double& reverse) const {
-  areas(cyl_.crankAngle_deg(), forward, reverse);
+  areas(cyl_.crankAngle_deg() + lead_, forward, reverse);
 }
 
 double CrankValveArea::effectiveArea(gasdyn::FlowDirection dir, double) const {

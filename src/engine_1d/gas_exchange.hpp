@@ -39,15 +39,22 @@ class CrankValveArea final : public gasdyn::AreaProvider {
                  double close_deg, bool normal_is_forward);
   double effectiveArea(gasdyn::FlowDirection dir, double t) const override;
   double areaAt(double theta_deg, bool forward) const;
-  /// Both effective areas [m^2] at the cylinder's current crank angle (one look-up).
+  /// Both effective areas [m^2] at the cylinder's current crank angle + the lead angle (one
+  /// look-up). The assembly sets the lead to half the coupled step's crank angle, so a step uses
+  /// the area at its mid-point (midpoint rule in the valve motion).
   void areasNow(double& forward, double& reverse) const;
+  void setLead(double deg) { lead_ = deg; }
+  /// Both effective areas [m^2] at crank angle theta [deg, within [-360, 360)].
+  void areasAt(double theta_deg, double& forward, double& reverse) const {
+    areas(theta_deg, forward, reverse);
+  }
   double lift(double theta_deg) const;  // [m]
 
  private:
   void areas(double theta_deg, double& forward, double& reverse) const;
   const cyl::Cylinder& cyl_;
   ValveSpec v_;
-  double open_, duration_;
+  double open_, duration_, lead_ = 0.0;
   std::vector<double> tab_;  // (forward, reverse) pairs over phi = 0 ... Delta, step kStep
 };
 

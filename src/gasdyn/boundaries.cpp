@@ -28,12 +28,31 @@ void ClosedEnd::computeFluxes(double) {
 OpenEnd::OpenEnd(std::string name, PipeEnd end, Volume& volume)
     : Boundary(std::move(name)), vol_(volume) {
   end_ = claim(end);
-  vol_.registerConnection(end_.area());
+  if (vol_.isReservoir()) {
+    vol_.registerConnection(end_.area());
+  } else {
+    port_.pipe = end_.pipe;
+    port_.end = end_.end;
+    vol_.registerPort(&port_, end_.area());
+  }
 }
 
 void OpenEnd::computeFluxes(double) {
-  const FaceState f = reservoirFace(end_.pipe->gas(), end_.state(), vol_.p(), vol_.T());
-  mdot_ = applyFace(f, end_, &vol_);
+  const PerfectGas& g = end_.pipe->gas();
+  const EndState s = end_.state();
+  const double p0 = vol_.p(), T0 = vol_.T();
+  const FaceState f = reservoirFace(g, s, p0, T0);
+  if (vol_.isReservoir()) {
+    mdot_ = applyFace(f, end_, &vol_);
+    return;
+  }
+  port_.flux = faceFlux(g, f.rho, f.u_in, f.p, s.A);  // given to the pipe end by closePorts()
+  if (vol_.implicit()) {
+    const FaceSensitivity d = reservoirFaceSensitivity(g, s, p0, T0, f);
+    port_.dmdot_dp = d.dmdot;
+    port_.dmomentum_dp = d.dmomentum;
+    port_.denergy_dp = d.denergy;
+  }
 }
 
 Valve::Valve(std::string name, Volume& volume, PipeEnd end,

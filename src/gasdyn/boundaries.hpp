@@ -4,6 +4,8 @@
 //               isentropic from the volume's state taken as total (p, T), outflow at the volume's
 //               static pressure; subsonic or choked. Any number of OpenEnds may share one Volume
 //               (N-pipe plenum / junction); the volume receives exactly minus the pipe flux.
+//               To a finite volume the end is a VolumePort: the volume gives the final flux to
+//               the pipe end in closePorts() (linearised in its pressure if it is implicit).
 //   Valve       orifice between a Volume and a pipe end, effective area from an AreaProvider
 //               (Forward = from the volume into the pipe), isentropic nozzle (choked/subsonic) +
 //               characteristic of the pipe end solved together; both directions.
@@ -35,11 +37,13 @@ class OpenEnd final : public Boundary {
  public:
   OpenEnd(std::string name, PipeEnd end, Volume& volume);
   void computeFluxes(double t) override;
-  double massFlowIn() const { return mdot_; }  // last mass flow into the pipe [kg/s]
+  /// Last mass flow into the pipe [kg/s] (final, after the volume closed its ports).
+  double massFlowIn() const { return vol_.isReservoir() ? mdot_ : port_.flux.mdot_in; }
 
  private:
   PipeEnd end_;
   Volume& vol_;
+  VolumePort port_;  // finite volumes only
   double mdot_ = 0.0;
 };
 

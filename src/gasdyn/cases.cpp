@@ -43,13 +43,15 @@ Profile runSod(SolverKind solver, int cells, double t_end) {
   return r;
 }
 
-DriftResult runClosedNetwork(SolverKind solver, int cells_per_m, double t_end) {
+DriftResult runClosedNetwork(SolverKind solver, int cells_per_m, double t_end, bool implicit) {
   Network net(PerfectGas{1.4, 287.0});
+  net.setImplicitVolumes(implicit);
   auto cfg = [&](const char* name, double L, double d1, double d2) {
     PipeConfig c;
     c.name = name;
     c.length = L;
-    c.cells = std::max(2, static_cast<int>(std::lround(L * cells_per_m)));
+    c.cells = std::max(solver == SolverKind::FSM ? 1 : 2,
+                       static_cast<int>(std::lround(L * cells_per_m)));
     c.diameter_left = d1;
     c.diameter_right = d2;
     c.friction_darcy = 0.02;

@@ -15,7 +15,8 @@ struct Profile {
 Profile runSod(SolverKind solver, int cells, double t_end = 0.6e-3);
 
 /// Closed network: pipe a (closed left end) -> junction volume <- pipes b, c -> plenum; a starts at
-/// 3 bar, the rest at 1 bar (all 300 K); friction f_D = 0.02; runs t_end seconds.
+/// 3 bar, the rest at 1 bar (all 300 K); friction f_D = 0.02; runs t_end seconds. implicit:
+/// the two volumes' open ends linearised-implicit (Network::setImplicitVolumes).
 struct DriftResult {
   double mass0, mass1, energy0, energy1;  // [kg], [J]
   long steps;
@@ -23,7 +24,8 @@ struct DriftResult {
   double massDrift() const { return (mass1 - mass0) / mass0; }
   double energyDrift() const { return (energy1 - energy0) / energy0; }
 };
-DriftResult runClosedNetwork(SolverKind solver, int cells_per_m, double t_end = 1.0);
+DriftResult runClosedNetwork(SolverKind solver, int cells_per_m, double t_end = 1.0,
+                             bool implicit = false);
 
 /// Open-closed pipe (L = 1 m, D = 50 mm, open end to 1 bar / 300 K, gas initially at 1.01 bar):
 /// first resonance from the zero crossings of the closed-end pressure oscillation.

@@ -50,6 +50,40 @@ FaceState reservoirFace(const PerfectGas& gas, const EndState& s, double p0, dou
   return {pb / (gas.R * Tb), u, pb};
 }
 
+FaceSensitivity reservoirFaceSensitivity(const PerfectGas& gas, const EndState& s, double p0,
+                                         double T0, const FaceState& f) {
+  const double rho = f.rho, u = f.u_in, pb = f.p, A = s.A;
+  const double c2 = gas.gamma * pb / rho, cb = std::sqrt(c2);
+  double du, drho, dp;
+  if (u <= 0.0) {
+    if (-u >= cb * (1.0 - 1e-12)) return {0.0, 0.0, 0.0};  // choked outflow
+    du = 1.0 / (rho * cb);
+    drho = 1.0 / c2;
+    dp = 1.0;
+  } else {
+    const double us = std::sqrt(2.0 * gas.gamma * gas.R * T0 / (gas.gamma + 1.0));
+    if (u >= us * (1.0 - 1e-12)) {  // choked inflow: face state proportional to p0
+      du = 0.0;
+      drho = rho / p0;
+      dp = pb / p0;
+    } else {
+      const double cs = std::sqrt(gas.gamma * s.p / s.rho), g = 0.5 * (gas.gamma - 1.0);
+      const double ik = 2.0 * gas.gamma / (gas.gamma - 1.0);
+      const double as = 1.0 - g * (s.u_in - u) / cs;  // B + G u_b = a s
+      const double Tb = pb / (rho * gas.R);
+      du = (as / (ik * p0)) / (g / cs + as * u / (2.0 * gas.cp() * Tb));
+      drho = rho / p0 - rho * u / c2 * du;
+      dp = pb / p0 - rho * u * du;
+    }
+  }
+  const double mdot = rho * u * A;
+  const double dm = A * (u * drho + rho * du);
+  const double k = gas.gamma / (gas.gamma - 1.0);
+  const double h0 = k * pb / rho + 0.5 * u * u;
+  const double dh0 = k * (dp / rho - pb * drho / (rho * rho)) + u * du;
+  return {dm, A * (dp + u * u * drho + 2.0 * rho * u * du), h0 * dm + mdot * dh0};
+}
+
 FaceState massFlowFace(const PerfectGas& gas, const EndState& s, double mdot, double T0) {
   const Wave w(gas, s);
   if (mdot > 0.0) {

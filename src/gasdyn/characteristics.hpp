@@ -33,6 +33,26 @@ FaceState closedFace(const PerfectGas& g, const EndState& s);
 /// Open end to gas at rest (p0 [Pa], T0 [K]): isentropic inflow from the total state, outflow at
 /// static p0; both directions may choke.
 FaceState reservoirFace(const PerfectGas& g, const EndState& s, double p0, double T0);
+/// Derivatives of the flux into the pipe through a reservoirFace (open end to gas at rest at p0,
+/// T0) with respect to p0 at fixed T0 and fixed end-cell state: mass [kg/(s Pa)], momentum
+/// [N/Pa = m^2], energy [W/Pa]. Used by the implicit volume ports (volume.hpp). Exact
+/// derivatives of the face relations of each regime, f = the face reservoirFace returned:
+///  * subsonic outflow (u_b < 0, face at p_b = p0 on the pipe's simple wave):
+///      du_b/dp0 = 1/(rho_b c_b), drho_b/dp0 = 1/c_b^2, dp_b/dp0 = 1
+///      -> dmdot/dp0 = A (c_b + u_b)/c_b^2 = A (1 - M_b)/c_b;
+///  * subsonic inflow (0 < u_b < u*, isentropic from (p0, T0) meeting the simple wave
+///    B + G u_b = a s, a = (p0/p)^(1/ik), s = sqrt(T_b/T0)):
+///      du_b/dp0 = (a s/(ik p0)) / (G + a s u_b/(2 cp T_b)),
+///      drho_b/dp0 = rho_b/p0 - rho_b u_b/c_b^2 du_b/dp0,  dp_b/dp0 = p_b/p0 - rho_b u_b du_b/dp0;
+///  * choked inflow: the face scales with p0 (dmdot/dp0 = mdot/p0); choked outflow: 0.
+/// Then dmdot = A (u drho + rho du), dmomentum = A (dp + u^2 drho + 2 rho u du),
+/// denergy = h0 dmdot + mdot dh0 with h0 = gamma/(gamma-1) p/rho + u^2/2 (faceFlux).
+struct FaceSensitivity {
+  double dmdot, dmomentum, denergy;
+};
+FaceSensitivity reservoirFaceSensitivity(const PerfectGas& g, const EndState& s, double p0,
+                                         double T0, const FaceState& f);
+
 /// Face carrying mdot_in [kg/s] (>0 into the pipe, supply stagnation temperature T0_in [K];
 /// <0 out of the pipe), capped at the sonic face.
 FaceState massFlowFace(const PerfectGas& g, const EndState& s, double mdot_in, double T0_in);

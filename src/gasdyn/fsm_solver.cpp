@@ -121,6 +121,9 @@ CellFault FsmSolver::step(double dt, const EndFlux& left, const EndFlux& right) 
   for (int j = 1; j < n; ++j) uf[j] = 2.0 * m[j] * iAf[j] / (rho[j - 1] + rho[j]);
   uf[n] = m[n] * iAf[n] / rho[n - 1];
   double vmax = 0.0;
+  // the bulk viscosity acts through the interior ports only: a 1-cell pipe has none, so its
+  // signal speed is |u| + c (no diffusion limit)
+  const double vis_on = n > 1 ? 1.0 : 0.0;
   for (int i = 0; i < n; ++i) {
     const double r = rho[i], ir = 1.0 / r, ui = 0.5 * (uf[i] + uf[i + 1]);
     const double pi = gm1 * (E[i] - 0.5 * r * ui * ui);
@@ -131,7 +134,7 @@ CellFault FsmSolver::step(double dt, const EndFlux& left, const EndFlux& right) 
     c[i] = ci;
     // signal speed incl. the bulk-viscosity diffusion limit dt <= dx/(2 nu/dx)
     const double du = uf[i + 1] - uf[i];
-    const double visc = du < 0.0 ? 2.0 * (c1 * ci - c2 * du) : 0.0;
+    const double visc = du < 0.0 ? vis_on * 2.0 * (c1 * ci - c2 * du) : 0.0;
     vmax = std::max(vmax, std::abs(ui) + ci + visc);
     ok &= (pi > 0.0) & (pi < kHuge);
   }

@@ -19,7 +19,12 @@
 //    (du < 0) so shocks are captured without ringing on coarse meshes;
 //  * S_e = wall heat dt q_w/A_c, implicitly limited so T never overshoots T_wall.
 //  * end ports carry the mass and enthalpy flows given by the boundary objects.
-// Stable for dt <= CFL dx / max(|u| + c). Conserves mass and total energy to round-off.
+// Stable for dt <= CFL dx / max(|u| + c + 2 nu/dx) (nu/dx = c1 c + c2 |du| in compression; 0
+// with one cell: its two ports are boundary faces, so q never acts). Conserves mass and total
+// energy to round-off.
+// One cell: a valid element (mass and energy of the cell, both port fluxes from the boundaries'
+// characteristic face solutions); it carries no momentum equation of its own, the end faces see
+// the cell velocity (mean of the two port velocities) through the Riemann invariants.
 #pragma once
 #include <vector>
 

@@ -23,12 +23,18 @@ Pipe& Network::addPipe(PipeConfig cfg) {
 
 Volume& Network::addVolume(std::string name, double volume_m3, double p, double T) {
   volumes_.push_back(std::make_unique<Volume>(gas_, std::move(name), volume_m3, p, T));
+  volumes_.back()->setImplicit(implicit_volumes_);
   return *volumes_.back();
 }
 
 Volume& Network::addReservoir(std::string name, double p, double T) {
   volumes_.push_back(std::make_unique<Volume>(Volume::reservoir(gas_, std::move(name), p, T)));
   return *volumes_.back();
+}
+
+void Network::setImplicitVolumes(bool on) {
+  implicit_volumes_ = on;
+  for (auto& v : volumes_) v->setImplicit(on);
 }
 
 ClosedEnd& Network::close(Pipe& p, End e) {
@@ -112,6 +118,7 @@ void Network::step(double dt) {
 
 void Network::stepOnce(double dt) {
   for (auto& b : boundaries_) b->computeFluxes(t_);
+  for (auto& v : volumes_) v->closePorts(dt);  // port fluxes -> pipe ends (implicit: solved dp)
   for (auto& p : pipes_) p->step(dt);
   for (auto& v : volumes_) v->advance(dt);
   for (auto& b : boundaries_) b->afterStep(dt);

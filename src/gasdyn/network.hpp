@@ -4,8 +4,10 @@
 // Time stepping: one common step for the whole network. advance(interval) splits the interval in
 // equal steps dt <= min(pipe CFL steps, volume steps V/(c sum A), boundary limits), re-evaluated
 // every step; each step: every boundary computes its end-face fluxes from the states at t (and the
-// matching volume flows), then every pipe and volume advances by dt with those fluxes. Mass and
-// energy therefore move between elements exactly (conserved to round-off).
+// matching volume flows), every finite volume closes its pipe-end ports (explicit, or linearised
+// implicit in its pressure: setImplicitVolumes, volume.hpp; implicit ports do not limit the step),
+// then every pipe and volume advances by dt with those fluxes. Mass and energy therefore move
+// between elements exactly (conserved to round-off).
 // Robustness: pipes/volumes throw hbt::ModelDivergence naming the element, cell and quantity on a
 // non-physical state; a step below dt_floor (default 1e-9 s) throws naming the limiting element.
 // No allocation inside advance() (all storage is sized at construction).
@@ -28,6 +30,9 @@ class Network {
   Pipe& addPipe(PipeConfig cfg);  // name must be unique
   Volume& addVolume(std::string name, double volume_m3, double p, double T);
   Volume& addReservoir(std::string name, double p, double T);
+  /// Open ends to finite volumes linearised-implicit in the volume pressure (volume.hpp); applies
+  /// to volumes added before and after the call. Default: explicit.
+  void setImplicitVolumes(bool on);
   /// Adds any boundary (constructed in place); returns it.
   template <class B, class... Args>
   B& add(Args&&... args) {
@@ -70,7 +75,7 @@ class Network {
   std::vector<std::unique_ptr<Boundary>> boundaries_;
   double t_ = 0.0, last_dt_ = 0.0, dt_floor_ = 1e-9;
   long steps_ = 0;
-  bool validated_ = false;
+  bool validated_ = false, implicit_volumes_ = false;
 };
 
 }  // namespace hbt::gasdyn

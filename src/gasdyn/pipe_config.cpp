@@ -10,7 +10,11 @@ PipeGeometry PipeGeometry::build(const PipeConfig& c) {
   const std::string src = "pipe " + c.name;
   if (!(c.length > 0.0) || !std::isfinite(c.length))
     throw InputError(src, "length", "must be > 0 m");
-  if (c.cells < 2) throw InputError(src, "cells", "need at least 2 cells");
+  // FSM: one cell is a valid staggered element (both ports are boundary faces: the pipe is then
+  // a small volume whose ends see it through the characteristics); TVD needs a cell stencil.
+  if (c.cells < (c.solver == SolverKind::FSM ? 1 : 2))
+    throw InputError(src, "cells", c.solver == SolverKind::FSM ? "need at least 1 cell (FSM)"
+                                                               : "need at least 2 cells (TVD)");
   if (!(c.friction_darcy >= 0.0)) throw InputError(src, "friction_darcy", "must be >= 0");
   if (!(c.cfl > 0.0 && c.cfl <= 1.0)) throw InputError(src, "cfl", "must be in (0, 1]");
   if (c.heat == WallHeat::GivenCoefficient && !(c.h_wall >= 0.0))

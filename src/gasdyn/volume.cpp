@@ -1,5 +1,6 @@
 #include "gasdyn/volume.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -33,9 +34,37 @@ void Volume::setReservoirState(double p, double T) {
   T_ = T;
 }
 
+void Volume::registerPort(VolumePort* port, double area) {
+  if (reservoir_) throw InputError("volume " + name_, "port", "a reservoir has no ports");
+  ports_.push_back(port);
+  port_area_ += area;
+}
+
 double Volume::maxDt() const {
-  if (reservoir_ || area_sum_ <= 0.0) return std::numeric_limits<double>::infinity();
-  return V_ / (gas_.soundSpeed(T_) * area_sum_);
+  const double a = implicit_ ? area_sum_ : area_sum_ + port_area_;
+  if (reservoir_ || a <= 0.0) return std::numeric_limits<double>::infinity();
+  return V_ / (gas_.soundSpeed(T_) * a);
+}
+
+void Volume::closePorts(double dt) {
+  double dp = 0.0;
+  if (implicit_ && !ports_.empty()) {
+    double S = edot_, D = 0.0;
+    for (const VolumePort* q : ports_) {
+      S -= q->flux.energy_in;
+      D += q->denergy_dp;
+    }
+    const double k = (gas_.gamma - 1.0) * dt / V_;
+    dp = k * S / (1.0 + k * std::max(D, 0.0));
+  }
+  for (VolumePort* q : ports_) {
+    EndFlux& F = q->flux;
+    F.mdot_in += q->dmdot_dp * dp;
+    F.momentum += q->dmomentum_dp * dp;
+    F.energy_in += q->denergy_dp * dp;
+    q->pipe->setEndFlux(q->end, F);
+    addFlow(-F.mdot_in, -F.energy_in);
+  }
 }
 
 void Volume::advance(double dt) {

@@ -4,17 +4,39 @@
 // Gas at rest, perfect gas, adiabatic walls:
 //   dm/dt = sum_k mdot_in,k              [kg/s]
 //   dU/dt = sum_k mdot_in,k h0_k         [W]    (total enthalpy of the entering/leaving gas)
-//   U = m cv T [J],   p = m R T / V [Pa]
-// Integrated with the network time step (explicit, exactly conservative: every flow added here is
-// the negative of the flow given to the connected pipe end). Stable time step ~ V/(c sum A_k),
-// A_k the connected end/orifice areas: a junction volume of about sum_k A_k dx_k keeps it above
-// the pipes' CFL step.
+//   U = m cv T [J],   p = m R T / V = (gamma-1) U/V [Pa]
+// Integrated with the network time step, exactly conservative: every flow added here is the
+// negative of the flow given to the connected pipe end.
+//
+// Explicit connections (valves, turbomachines: addFlow) use the state at the step start; their
+// stable step is ~ V/(c sum A_k) (A_k the registered end/orifice areas).
+// Implicit ports (OpenEnd to a finite volume when the volume is implicit, Network::
+// setImplicitVolumes): the port flux into pipe end k is linearised in the volume pressure,
+//   F_k(p') = F_k(p) + (dF_k/dp) dp,   dp = p' - p   (mass, momentum, energy; characteristics.hpp)
+// and dp is the linearised backward-Euler solution of the volume energy balance (at fixed V,
+// p = (gamma-1) U/V, so the energy equation alone gives p'):
+//   dp = k S / (1 + k D),  k = (gamma-1) dt/V,  S = E_expl - sum_k E_k,  D = sum_k dE_k/dp >= 0
+// (E_k energy into pipe end k, E_expl the explicit connections' energy into the volume). Both
+// the pipe ends and the volume then get the corrected fluxes F_k(p'), so mass and energy stay
+// conserved to round-off whatever dp is; the ports then no longer limit the step (the filling
+// mode dp/dt = -(c^2/V) sum_k dmdot_k/dp p is integrated by backward Euler: unconditionally
+// stable, first order, like the explicit update).
 #pragma once
 #include <string>
+#include <vector>
 
 #include "gasdyn/gas.hpp"
+#include "gasdyn/pipe.hpp"
 
 namespace hbt::gasdyn {
+
+/// One pipe end connected to a Volume through an implicit port (owned by the OpenEnd).
+struct VolumePort {
+  Pipe* pipe = nullptr;
+  End end = End::Left;
+  EndFlux flux;  // into the pipe, at the volume state of the step start (final after closePorts)
+  double dmdot_dp = 0.0, dmomentum_dp = 0.0, denergy_dp = 0.0;  // d flux / d p_volume
+};
 
 class Volume {
  public:
@@ -35,7 +57,16 @@ class Volume {
   void setReservoirState(double p, double T);
 
   void addFlow(double mdot_in, double energy_in) { mdot_ += mdot_in, edot_ += energy_in; }
+  /// Explicit connection of end/orifice area [m^2] (stable-step estimate).
   void registerConnection(double area) { area_sum_ += area; }
+  /// Port of a pipe end of area [m^2] (finite volumes only; setup time, not during a step).
+  void registerPort(VolumePort* port, double area);
+  /// Implicit ports on/off (default off: ports are explicit connections).
+  void setImplicit(bool on) { implicit_ = on && !reservoir_; }
+  bool implicit() const { return implicit_; }
+  /// After all boundaries have computed their fluxes: solves dp (implicit) and gives every port's
+  /// final flux to its pipe end and (negated) to this volume.
+  void closePorts(double dt);
   double maxDt() const;
   void advance(double dt);  // throws hbt::ModelDivergence("volume <name>", ...)
   /// Time integrals of what entered the volume since the start [kg], [J].
@@ -46,10 +77,11 @@ class Volume {
   Volume() = default;
   PerfectGas gas_;
   std::string name_;
-  bool reservoir_ = false;
+  bool reservoir_ = false, implicit_ = false;
   double V_ = 0.0, p_ = 0.0, T_ = 0.0, m_ = 0.0, U_ = 0.0;
-  double mdot_ = 0.0, edot_ = 0.0, area_sum_ = 0.0;
+  double mdot_ = 0.0, edot_ = 0.0, area_sum_ = 0.0, port_area_ = 0.0;
   double cum_m_ = 0.0, cum_e_ = 0.0;
+  std::vector<VolumePort*> ports_;
 };
 
 }  // namespace hbt::gasdyn

@@ -1,9 +1,11 @@
 // Components of the assembly: tabulated turbo maps against the direct look-ups, valve areas,
 // the charge-air-cooler link (mass conservation, heat removal), the cycle window, and the GTR
-// No. 4 reference speeds / regression helpers.
+// No. 4 reference speeds / regression helpers, determinism and the coupled-step limiter.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "engine_1d/cycle_window.hpp"
 #include "engine_1d/whtc.hpp"
@@ -72,23 +74,50 @@ TEST(Engine1DComponents, ValveAreaFollowsLiftAndTiming) {
 }
 
 TEST(Engine1DComponents, CycleWindowGivesExactCycleMeanAndImpulses) {
-  CycleWindow<2, 144> win;
-  win.reset();
-  // x0 = 1 + sin(theta), period 720 deg at constant speed; one impulse of 3 per cycle
-  const double dth = 0.7, dt = 1e-4;
-  double th = 0.0;
-  for (int i = 0; i < 20000; ++i) {
-    const double x[2] = {1.0 + std::sin(th * M_PI / 360.0), 0.0};
-    win.add(dt, dth, x);
-    const double before = std::fmod(th, 720.0);
-    th += dth;
-    if (std::fmod(th, 720.0) < before) win.addImpulse(1, 3.0);
+  // x0 = 1 + sin(theta), period 720 deg at constant speed; x1: an "injection" of 3 per cycle
+  // spread over 100...120 deg, passed as the step's mean rate (as the assembly does). Steps
+  // shorter than a bin (5 deg) and up to longer than one (the FSM's coupled step reaches 6 deg):
+  // every window, at any phase of the step/bin/cycle pattern, must read the cycle means.
+  for (const double dth : {0.7, 3.8, 5.0, 6.3}) {
+    CycleWindow<2, 144> win;
+    win.reset();
+    const double dt = 1e-4 * dth;
+    const double cycle_time = 720.0 / dth * dt;
+    auto injected = [](double th) {  // cumulative injection at crank angle th [deg]
+      const double c = std::floor(th / 720.0), ph = th - 720.0 * c;
+      return 3.0 * (c + std::clamp((ph - 100.0) / 20.0, 0.0, 1.0));
+    };
+    double th = 0.0, worst0 = 0.0, worst1 = 0.0;
+    for (int i = 0; i < static_cast<int>(20000 * 0.7 / dth); ++i) {
+      const double a = th * M_PI / 360.0, b = (th + dth) * M_PI / 360.0;
+      const double x[2] = {1.0 + (std::cos(a) - std::cos(b)) / (b - a),  // step mean of x0
+                           (injected(th + dth) - injected(th)) / dt};
+      win.add(dt, dth, x);
+      th += dth;
+      if (th > 1440.0) {
+        double m[2];
+        win.mean(m);
+        worst0 = std::max(worst0, std::abs(m[0] - 1.0));
+        worst1 = std::max(worst1, std::abs(m[1] * cycle_time / 3.0 - 1.0));
+      }
+    }
+    std::printf("[cycle window] %.1f deg steps: worst |mean - 1| %.2e, injection %.2e\n", dth,
+                worst0, worst1);
+    EXPECT_LT(worst0, 1e-3) << dth << " deg steps";
+    // a step's injection is known only as its mean rate over the step: the window edge cutting
+    // a step smears up to ~half a step of the 20 deg injection (exact when the steps tile 720)
+    EXPECT_LT(worst1, 0.5 * dth / 20.0 + 1e-12) << dth << " deg steps";
   }
-  double m[2];
+  CycleWindow<1, 144> win;  // impulses
+  win.reset();
+  const double one[1] = {0.0};
+  for (int i = 0; i < 1440; ++i) {
+    win.add(1e-4, 1.0, one);
+    if (i % 720 == 300) win.addImpulse(0, 2.0);
+  }
+  double m[1];
   win.mean(m);
-  const double cycle_time = 720.0 / dth * dt;
-  EXPECT_NEAR(m[0], 1.0, 2e-3);
-  EXPECT_NEAR(m[1], 3.0 / cycle_time, 0.01 * 3.0 / cycle_time);
+  EXPECT_NEAR(m[0], 2.0 / 0.072, 1e-9);
 }
 
 TEST(Engine1DComponents, GtrReferenceSpeedsAndRegression) {
@@ -110,4 +139,29 @@ TEST(Engine1DComponents, GtrReferenceSpeedsAndRegression) {
   EXPECT_NEAR(r.see, 0.0, 1e-9);
   EXPECT_TRUE(torqueLimits(1100.0).pass({1.0, 5.0, 0.95, 30.0, 100}));
   EXPECT_FALSE(torqueLimits(1100.0).pass({0.8, 5.0, 0.95, 30.0, 100}));
+}
+
+TEST(Engine1DComponents, CoupledStepDeterministicAndNotSetByVolumes) {
+  // Same run twice -> bit-identical outputs; with implicit volumes and the FSM's own mesh the
+  // coupled step is set by a pipe's CFL (or the crank-angle cap), never by a volume, and the
+  // cylinder coupling guard does not bind at this mid-load point.
+  const Engine1DParams& p = defaultParams();
+  ASSERT_TRUE(p.engine.implicit_volumes);
+  double torque[2], fuel[2];
+  for (int r = 0; r < 2; ++r) {
+    Engine1D e(p, repoRoot());
+    e.reset(1400.0 * kRpm, 600.0);
+    const Engine1DOutputs& o = run(e, 1400.0, 600.0, 0.4);
+    torque[r] = o.brake_torque_Nm;
+    fuel[r] = o.fuel_mass_kg;
+    std::string who;
+    const double dt = e.assembly().stableDt(1400.0 * kRpm, &who);
+    bool is_pipe = who == "crank-angle cap";
+    for (auto* n : {&e.assembly().intakeNetwork(), &e.assembly().exhaustNetwork()})
+      for (const auto& pp : n->pipes()) is_pipe |= pp->name() == who;
+    EXPECT_TRUE(is_pipe) << "step limited by " << who;
+    EXPECT_GT(dt, 0.3e-3) << who;
+  }
+  EXPECT_EQ(torque[0], torque[1]);
+  EXPECT_EQ(fuel[0], fuel[1]);
 }

@@ -2,6 +2,7 @@
 //
 //   engine_1d_whtc [--duration 1800] [--solver fsm|tvd] [--dt 0.01] [--out DIR] [--no-plot]
 //   engine_1d_whtc --bench [--duration 300]     (FSM and TVD on the same trace: CPU cost, fuel)
+//   --limiters: tally which element sets the coupled step (sampled after every macro step)
 // Denormalisation per UN GTR No. 4 with the engine's own (reference) full-load and motoring curves
 // (whtc.hpp); n_idle = 700 rpm x f_n (VECTO bus engine idle, speed-scaled like the map).
 // Between the 1 Hz cycle points the reference speed and torque are interpolated linearly; the
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,7 +33,7 @@ constexpr double kRpm = M_PI / 30.0;
 struct Args {
   double duration = 1800.0, dt = 0.01;
   std::string solver, out = "engine_1d_whtc_out", config = "config/engine_1d.yaml", root;
-  bool bench = false, plot = true;
+  bool bench = false, plot = true, limiters = false;
 };
 
 struct Result {
@@ -59,9 +61,10 @@ Args parse(int argc, char** argv) {
     else if (k == "--root") a.root = val();
     else if (k == "--bench") a.bench = true;
     else if (k == "--no-plot") a.plot = false;
+    else if (k == "--limiters") a.limiters = true;
     else {
       std::fprintf(stderr, "usage: engine_1d_whtc [--duration s] [--solver fsm|tvd] [--dt s] "
-                           "[--bench] [--out DIR] [--config file] [--root dir] [--no-plot]\n");
+                           "[--bench] [--out DIR] [--config file] [--root dir] [--no-plot] [--limiters]\n");
       std::exit(2);
     }
   }
@@ -104,6 +107,8 @@ Result runCycle(const Args& a, const std::string& solver, const std::string& csv
   const int steps = static_cast<int>(std::lround(dur / a.dt));
   const int per_s = static_cast<int>(std::lround(1.0 / a.dt));
   Engine1DInputs in;
+  std::map<std::string, long> limiter_count;  // --limiters: what sets the coupled step
+  double limiter_dt_sum = 0.0;
   for (int k = 1; k <= steps; ++k) {
     const double t = k * a.dt;
     double n, T;
@@ -112,6 +117,11 @@ Result runCycle(const Args& a, const std::string& solver, const std::string& csv
     in.torque_request_Nm = T;
     const Engine1DOutputs& o = eng.step(a.dt, in);
     const double w = in.speed_rad_s;
+    if (a.limiters) {  // sampled once per macro step, outside the model's CPU time
+      std::string who;
+      limiter_dt_sum += eng.assembly().stableDt(w, &who);
+      ++limiter_count[who];
+    }
     r.fuel_map_act += ref.steadyFuel(w, o.brake_torque_Nm) * a.dt;
     r.fuel_map_ref += ref.steadyFuel(w, T) * a.dt;
     r.work_act += std::max(o.brake_torque_Nm, 0.0) * w * a.dt;
@@ -142,6 +152,14 @@ Result runCycle(const Args& a, const std::string& solver, const std::string& csv
     r.sim = o.sim_time_s;
     r.nox = o.nox_mass_kg;
     r.steps = o.gas_steps;
+  }
+  if (a.limiters) {
+    std::vector<std::pair<long, std::string>> v;
+    for (const auto& [name, n] : limiter_count) v.push_back({n, name});
+    std::sort(v.rbegin(), v.rend());
+    std::printf("step limiters (sampled after each macro step, %d samples, mean stable step %.3f ms):\n",
+                steps, 1e3 * limiter_dt_sum / steps);
+    for (const auto& [n, name] : v) std::printf("  %-32s %6.2f %%\n", name.c_str(), 100.0 * n / steps);
   }
   r.torque = regress(xr, yr);
   r.torque_pos = regress(xq, yq);

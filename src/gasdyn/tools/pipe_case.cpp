@@ -1,6 +1,6 @@
 // pipe_case: verification runs of the gasdyn pipe-flow library.
 //   pipe_case --case sod --solver fsm|tvd --cells N [--out FILE.csv]
-//   pipe_case --case closed --solver fsm|tvd [--cells N_per_m] [--time S]
+//   pipe_case --case closed --solver fsm|tvd [--cells N_per_m] [--time S] [--implicit]
 //   pipe_case --case quarterwave --solver fsm|tvd [--cells N]
 //   pipe_case --case bench [--solver fsm|tvd] [--cells N] [--steps K]
 // Exit codes: 0 ok, 2 usage error, 3 model error.
@@ -21,9 +21,10 @@ namespace {
 
 const char* kUsage =
     "usage: pipe_case --case sod|closed|quarterwave|bench [--solver fsm|tvd] [--cells N]\n"
-    "                 [--out FILE.csv] [--time S] [--steps K]\n"
+    "                 [--out FILE.csv] [--time S] [--steps K] [--implicit]\n"
     "  sod          Sod shock tube at t = 0.6 ms, CSV x_m,rho_kg_m3,u_m_s,p_pa (--out, else stdout)\n"
     "  closed       closed network (junction + plenum), prints relative mass and energy drift\n"
+    "               (--implicit: volume open ends linearised-implicit)\n"
     "  quarterwave  open-closed pipe, prints first resonance vs c/4L\n"
     "  bench        cost per cell-step of the solver(s) [ns]\n";
 
@@ -59,6 +60,10 @@ int main(int argc, char** argv) {
       std::cout << kUsage;
       return 0;
     }
+    if (k == "--implicit") {  // flag without a value
+      a[k] = "1";
+      continue;
+    }
     if (k != "--case" && k != "--solver" && k != "--cells" && k != "--out" && k != "--time" &&
         k != "--steps")
       return usage("unknown argument '" + k + "'");
@@ -89,9 +94,10 @@ int main(int argc, char** argv) {
       if (!have_solver) return usage("--solver is required for --case closed");
       const int cpm = a.count("--cells") ? parseInt("--cells", a["--cells"], 2) : 50;
       const double t = a.count("--time") ? parseDouble("--time", a["--time"]) : 1.0;
-      const DriftResult r = runClosedNetwork(solver, cpm, t);
-      std::printf("closed network, %s, %d cells/m, %.3f s: %ld steps, cpu %.3f s\n",
-                  solverName(solver), cpm, t, r.steps, r.cpu_s);
+      const bool imp = a.count("--implicit") > 0;
+      const DriftResult r = runClosedNetwork(solver, cpm, t, imp);
+      std::printf("closed network, %s, %d cells/m, %s volumes, %.3f s: %ld steps, cpu %.3f s\n",
+                  solverName(solver), cpm, imp ? "implicit" : "explicit", t, r.steps, r.cpu_s);
       std::printf("mass   %.12e -> %.12e kg  relative drift %.3e\n", r.mass0, r.mass1,
                   r.massDrift());
       std::printf("energy %.12e -> %.12e J   relative drift %.3e\n", r.energy0, r.energy1,
