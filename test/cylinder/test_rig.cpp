@@ -243,3 +243,32 @@ TEST(Rig, LowLambdaFullLoadFuelBurnsBeforeExhaustValveOpening) {
   EXPECT_LT(lambda, cp.flame_lambda);  // the case under test: global air excess below the flame's
   EXPECT_GT(c.fuelBurnedThisCycle_kg() / rp.fuel_per_cycle_kg, 0.995);
 }
+
+TEST(Rig, NoxBatchIntervalConverges) {
+  // The Zeldovich kinetics are integrated in batches of nox_interval_deg at the batch's mean
+  // burned-zone state. Against 0.5-deg batches (the converged reference), NO per cycle from
+  // 6-deg batches (the engine's setting) must agree within 2 % and from 12-deg batches within
+  // 8 % at mid and full load (measured: 6 deg -1.6 / -0.8 %, 12 deg -6.9 / -3.4 %; the rate is
+  // convex in T, so the mean temperature under-predicts. A rate-weighted batch temperature,
+  // T = -Θ/ln<exp(-Θ/T_b)> with Θ = 69 090 K (Heywood eq. 11.8), was tried: +0.9 / +1.2 % and
+  // +3.0 / +4.4 %, an over-correction of similar size, so it was not adopted).
+  struct Case { double fuel_kg, p_in_Pa, p_ex_Pa; };
+  for (const Case& k : {Case{64e-6, 1.9e5, 1.75e5}, Case{125e-6, 2.7e5, 2.4e5}}) {
+    auto no = [&](double interval_deg) {
+      RigParams rp;
+      CylinderParams cp = test::loadParams(&rp);
+      cp.nox_interval_deg = interval_deg;
+      rp.fuel_per_cycle_kg = k.fuel_kg;
+      rp.p_intake_Pa = k.p_in_Pa;
+      rp.p_exhaust_Pa = k.p_ex_Pa;
+      SingleCylinderRig rig(cp, rp);
+      return rig.runCycles(4).no_mass_kg;
+    };
+    const double ref = no(0.5);
+    ASSERT_GT(ref, 0.0);
+    std::printf("fuel %.0f mg: NO 0.5 deg %.4g mg, 6 deg %+.2f %%, 12 deg %+.2f %%\n", k.fuel_kg * 1e6,
+                ref * 1e6, 100 * (no(6.0) / ref - 1), 100 * (no(12.0) / ref - 1));
+    EXPECT_NEAR(no(6.0) / ref, 1.0, 0.02);
+    EXPECT_NEAR(no(12.0) / ref, 1.0, 0.08);
+  }
+}
