@@ -151,17 +151,25 @@ double illinois(F f, double lo, double hi, double flo, double fhi, double rtol =
 }
 }  // namespace detail
 
+namespace detail {
+/// Residual of an outflow face at outflow speed wo [m/s]: pipe-side mass flow minus the device's
+/// demand(p0, T0) [kg/s] at the total state of the gas leaving through the face.
+template <class Demand>
+auto outflowResidual(const PerfectGas& gas, const Wave& w, Demand& demand) {
+  return [&w, &demand, cp = gas.cp(), R = gas.R](double wo) {
+    double p0, T0;
+    const double m = w.outflowTotal(wo, cp, R, p0, T0);
+    return m - demand(p0, T0);
+  };
+}
+}  // namespace detail
+
 /// Outflow face whose mass flow equals demand(p0_face, T0_face) >= 0 [kg/s] (a nozzle, a turbine
 /// map...): the device sees the total state of the gas actually leaving through the face.
 template <class Demand>
 FaceState demandOutflowFace(const PerfectGas& gas, const EndState& s, Demand demand) {
   const detail::Wave w(gas, s);
-  const double cp = gas.cp(), R = gas.R;
-  auto f = [&](double wo) {
-    double p0, T0;
-    const double m = w.outflowTotal(wo, cp, R, p0, T0);
-    return m - demand(p0, T0);
-  };
+  const auto f = detail::outflowResidual(gas, w, demand);
   const double ws = w.wSonic();
   const double f0 = f(0.0);
   if (f0 >= 0.0) return w.outflow(0.0);
@@ -242,12 +250,7 @@ template <class Demand>
 FaceState warmDemandOutflowFace(const PerfectGas& gas, const EndState& s, Demand demand,
                                 double& guess) {
   const detail::Wave w(gas, s);
-  const double cp = gas.cp(), R = gas.R;
-  auto f = [&](double wo) {
-    double p0, T0;
-    const double m = w.outflowTotal(wo, cp, R, p0, T0);
-    return m - demand(p0, T0);
-  };
+  const auto f = detail::outflowResidual(gas, w, demand);
   const double ws = w.wSonic();
   double x;
   if (guess >= ws && ws > 0.0 && f(ws) <= 0.0)  // still choked
