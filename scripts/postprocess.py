@@ -16,6 +16,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ledger  # noqa: E402
+
 DIESEL_DENSITY_KG_L = 0.835
 J_PER_KWH = 3.6e6
 
@@ -99,6 +102,14 @@ def summarise(out, scenario, args, status, data):
     if total is not None:
         s["stops_served"], s["stops_total"] = served, total
         s["stop_position_error_max_m"] = pos_err
+    L = ledger.energy_ledger(data)
+    if L is not None:
+        s["energy_kwh"] = L
+        s["energy_ledger_closure"] = ledger.ledger_closure(L)
+    fuel, time = ledger.fuel_by_state(data)
+    if fuel is not None:
+        s["fuel_by_state_kg"] = fuel
+        s["time_by_state_s"] = time
     exh = data.get("/engine/exhaust")
     if exh is not None and "nox_mass_kg" in exh and args.get("engine", "map") == "1d":
         s["nox_engine_out_g"] = exh["nox_mass_kg"][-1] * 1000.0
@@ -148,6 +159,13 @@ def plots(out, data):
     a2.set(xlabel="time [s]", ylabel="cumulative fuel [kg]")
     a1.set_title("Fuel")
     save(fig, "fuel.png")
+
+    L = ledger.energy_ledger(data)
+    if L is not None:
+        ledger.plot_ledger(L, os.path.join(out, "energy_ledger.png"))
+        files.append("energy_ledger.png")
+    if ledger.plot_operating_map(data, os.path.join(out, "operating_map.png")):
+        files.append("operating_map.png")
     return files
 
 
@@ -158,8 +176,22 @@ def report(out, s, status, files):
     lines.append("| quantity | value |")
     lines.append("|---|---|")
     for k, v in s.items():
+        if isinstance(v, dict):
+            continue
         lines.append("| %s | %s |" % (k, ("%.6g" % v) if isinstance(v, float) else v))
     lines.append("")
+    if "energy_kwh" in s:
+        lines += ["## Energy ledger", ""] + ledger.ledger_table(s["energy_kwh"]) + [""]
+    if "fuel_by_state_kg" in s:
+        fuel, time = s["fuel_by_state_kg"], s["time_by_state_s"]
+        tot_f, tot_t = sum(fuel.values()), sum(time.values())
+        lines += ["## Fuel by operating state", "", "| state | fuel kg | % fuel | time s | % time |",
+                  "|---|---|---|---|---|"]
+        for k in ledger.FUEL_STATES:
+            lines.append("| %s | %.4f | %.1f | %.1f | %.1f |" % (
+                k, fuel[k], 100 * fuel[k] / tot_f if tot_f > 0 else 0, time[k],
+                100 * time[k] / tot_t if tot_t > 0 else 0))
+        lines.append("")
     if s.get("sim_time_s"):
         lines.append("Wall/simulated time ratio: %.4f" % (s["wall_time_s"] / s["sim_time_s"]))
     lines.append("")
@@ -193,7 +225,7 @@ def main():
         print("twin: run FAILED: %s" % status["message"], file=sys.stderr)
         return 1
     print("twin: done: %s" % ", ".join("%s=%s" % (k, ("%.4g" % v) if isinstance(v, float) else v)
-                                      for k, v in s.items()))
+                                      for k, v in s.items() if not isinstance(v, dict)))
     return 0
 
 

@@ -16,7 +16,7 @@ struct EnginePortValues {
   double exhaust_mass_flow_kg_s = 0, exhaust_T_K = 0;           // turbine outlet
   double y_O2 = 0, y_CO2 = 0, y_H2O = 0, y_N2 = 0;              // mass fractions [-]
   double nox_mass_flow_kg_s = 0, nox_mass_kg = 0;               // as NO2
-  double heat_to_coolant_W = 0;
+  double heat_to_coolant_W = 0, heat_to_coolant_J = 0;           // [W], cumulative [J]
 };
 
 /// Publishers of /engine/state, /engine/exhaust, /engine/heat (advertised by the participant
@@ -56,6 +56,7 @@ class EnginePorts {
     hybrid_bus_twin::EngineHeat h;
     h.header.stamp = t;
     h.heat_to_coolant_w = v.heat_to_coolant_W;
+    h.heat_to_coolant_j = v.heat_to_coolant_J;
     h.coolant_pump_speed_rad_s = v.speed_rad_s;  // mechanical pump driven 1:1 by the crank
     heat_.publish(h);
   }

@@ -81,6 +81,17 @@ double VehicleModel::auxPower(const VehicleInputs& in) const {
          (in.has_fan_power ? in.fan_power_W : a.fan_default_W);
 }
 
+void VehicleModel::bookAuxConsumers(double dE_aux_J, double P_aux_W, const VehicleInputs& in) {
+  if (std::fabs(P_aux_W) < 1e-9) return;  // no aux power: no aux work this step either
+  const auto& a = p_.aux;
+  const double per_W = dE_aux_J / P_aux_W;  // the step's aux work per watt of aux power [s]
+  VehicleEnergy& e = out_.energy;
+  e.fan_J += per_W * (in.has_fan_power ? in.fan_power_W : a.fan_default_W);
+  e.steering_J += per_W * a.steering_pump_W;
+  e.pneumatic_J += per_W * a.air_compressor_W;
+  e.electric_J += per_W * a.alternator_W;
+}
+
 const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   const double vals[] = {in.target_speed_m_s, in.target_accel_m_s2, in.road_grade,
                          in.engine_torque_Nm, in.engine_max_torque_Nm, in.engine_min_torque_Nm,
@@ -125,12 +136,13 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   c.F_brake = brake_force_;
   c.grade = grade;
   c.rho = road_.airDensity(in.ambient_T_K);
-  const double v_start = v_;
+  const double v_start = v_, aux_start_J = out_.energy.aux_J;
   const int n = std::max(1, static_cast<int>(std::ceil(dt / p_.numerics.max_substep_s - 1e-9)));
   for (int i = 0; i < n; ++i) substep(dt / n, c);
   if (!std::isfinite(v_) || !std::isfinite(w_))
     throw ModelDivergence("vehicle", "state", "speed became non-finite");
   t_since_shift_ += dt;
+  bookAuxConsumers(out_.energy.aux_J - aux_start_J, c.P_aux, in);
 
   // 3. Driver and idle governor at t + dt: pedals, brake force and torque request.
   evaluateDriver(dt, in);

@@ -83,6 +83,11 @@ struct VehicleInputs {
 struct VehicleEnergy {
   double engine_J = 0.0, em_J = 0.0;                    // work delivered to the crank
   double aux_J = 0.0, gearbox_drag_J = 0.0, tc_loss_J = 0.0, gear_load_loss_J = 0.0;
+  // aux_J split by consumer (each a part of aux_J; they add up to it): cooling fan (signed:
+  // < 0 while the ram air drives it), steering pump, pneumatic system (air compressor),
+  // electric system (alternator). Booked as the consumer's share P_i/P_aux of each macro
+  // step's aux work (all consumers see the same crank-speed factor, see auxPower()).
+  double fan_J = 0.0, steering_J = 0.0, pneumatic_J = 0.0, electric_J = 0.0;
   double retarder_J = 0.0, axle_loss_J = 0.0, shift_loss_J = 0.0;
   double rolling_J = 0.0, aero_J = 0.0, grade_J = 0.0, brake_J = 0.0;
   double wheel_J = 0.0;                                 // work at the wheel hubs
@@ -161,6 +166,8 @@ class VehicleModel {
   // vehicle_model.cpp
   void evaluateDriver(double dt, const VehicleInputs& in);
   double auxPower(const VehicleInputs& in) const;
+  /// Splits one macro step's aux work dE_aux_J (at aux power P_aux_W) over the consumers.
+  void bookAuxConsumers(double dE_aux_J, double P_aux_W, const VehicleInputs& in);
 
   VehicleParams p_;
   RoadLoad road_;

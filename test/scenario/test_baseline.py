@@ -75,6 +75,47 @@ class Baseline(unittest.TestCase):
         self.assertLess(eff, 0.46)
 
 
+    def test_energy_ledger_in_summary(self):
+        """summary.json carries the ledger; it closes to 0.1 % and every key is finite."""
+        import math
+        out = self.runs["nodes"][0]
+        r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"), out,
+                            "--scenario", "baseline_urban"], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(out, "summary.json")) as f:
+            s = json.load(f)
+        L = s["energy_kwh"]
+        for k, v in L.items():
+            self.assertTrue(math.isfinite(v), k)
+        # driveline balance recomputed here from the terms (independent of the vehicle's residual)
+        sinks = sum(L[k] for k in ("aux_steering", "aux_pneumatic", "aux_electric", "fan",
+                                   "gearbox_drag", "converter", "gear_load", "retarder", "axle",
+                                   "shift", "rolling", "aero", "grade", "friction_brakes",
+                                   "kinetic_change"))
+        self.assertGreater(L["crank_engine"], 0.01)
+        self.assertLess(abs(L["crank_engine"] + L["crank_em"] - sinks), 1e-3 * L["crank_engine"])
+        self.assertLess(s["energy_ledger_closure"], 1e-3)
+        # aux consumers add up to the aux work the vehicle booked
+        self.assertAlmostEqual(L["aux_steering"] + L["aux_pneumatic"] + L["aux_electric"] + L["fan"],
+                               L["aux_total"], delta=1e-9 + 1e-9 * L["aux_total"])
+        # fuel: the engine's coolant heat and brake work are each a part of the fuel energy
+        self.assertGreater(L["engine_heat_to_coolant"], 0.0)
+        self.assertGreater(L["engine_exhaust_and_other"], 0.0)
+        self.assertAlmostEqual(L["fuel_chemical"], s["fuel_kg"] * LHV_J_KG / 3.6e6, places=9)
+        # the engine's own work and the work the driveline received differ by the exchange delay only
+        self.assertLess(abs(L["coupling_delay"]), 0.01 * L["crank_engine"])
+        # fuel and time by operating state add up to the totals
+        self.assertAlmostEqual(sum(s["fuel_by_state_kg"].values()), s["fuel_kg"], delta=1e-12)
+        self.assertAlmostEqual(sum(s["time_by_state_s"].values()), UNTIL, delta=1e-6)
+        self.assertGreater(s["fuel_by_state_kg"]["idle_at_stop"], 0.0)  # the mission starts at a stop
+        self.assertGreater(s["fuel_by_state_kg"]["traction"], 0.0)
+        with open(os.path.join(out, "report.md")) as f:
+            rep = f.read()
+        self.assertIn("## Energy ledger", rep)
+        self.assertTrue(os.path.exists(os.path.join(out, "energy_ledger.png")))
+        self.assertTrue(os.path.exists(os.path.join(out, "operating_map.png")))
+
+
 class Failures(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.mkdtemp(prefix="hbt_fail_")

@@ -156,6 +156,34 @@ TEST(VehicleDynamics, EnergyBalanceWithPrescribedEngine) {
   EXPECT_GT(vm.outputs().distance_m, 600.0);
 }
 
+TEST(VehicleDynamics, AuxWorkSplitsExactlyOverConsumers) {
+  // Neutral at a constant crank speed: the engine torque balances aux + neutral drag exactly,
+  // so each consumer's work is its power times time (fan: +3 kW for 5 s, then windmilling
+  // -1 kW for 5 s), and the consumers add up to the booked aux work.
+  const VehicleParams p;
+  VehicleModel vm(p);
+  const double w = p.driveline.idle_speed_rad_s, dt = 0.01;
+  vm.reset(0.0, 0, w);
+  VehicleInputs in;
+  in.neutral_request = true;
+  in.driver_enabled = false;
+  in.has_fan_power = true;
+  const auto& a = p.aux;
+  const double P_const = a.steering_pump_W + a.air_compressor_W + a.alternator_W;
+  for (int k = 0; k < 1000; ++k) {
+    in.fan_power_W = k < 500 ? 3000.0 : -1000.0;
+    in.engine_torque_Nm = (P_const + in.fan_power_W) / w + p.driveline.neutral_drag_torque_Nm;
+    vm.step(dt, in);
+  }
+  const auto& e = vm.outputs().energy;
+  EXPECT_NEAR(vm.outputs().engine_speed_rad_s, w, 1e-9 * w);
+  EXPECT_NEAR(e.fan_J, 3000.0 * 5.0 - 1000.0 * 5.0, 1e-6 * 1e4);
+  EXPECT_NEAR(e.steering_J, a.steering_pump_W * 10.0, 1e-6 * a.steering_pump_W * 10.0);
+  EXPECT_NEAR(e.pneumatic_J, a.air_compressor_W * 10.0, 1e-6 * a.air_compressor_W * 10.0);
+  EXPECT_NEAR(e.electric_J, a.alternator_W * 10.0, 1e-6 * a.alternator_W * 10.0);
+  EXPECT_NEAR(e.fan_J + e.steering_J + e.pneumatic_J + e.electric_J, e.aux_J, 1e-9 * e.aux_J);
+}
+
 TEST(VehicleDynamics, ShiftSlipPhaseIsSmoothAndDissipative) {
   VehicleParams p = noRetarder();
   VehicleModel vm(p);

@@ -65,6 +65,7 @@ void Engine1DParticipant::publishOutputs(const ros::Time& t) {
   v.nox_mass_flow_kg_s = o.nox_mass_flow_kg_s;
   v.nox_mass_kg = o.nox_mass_kg;
   v.heat_to_coolant_W = o.coolant_heat_W;
+  v.heat_to_coolant_J = o.coolant_heat_J;
   ports_.publish(t, v);
 }
 

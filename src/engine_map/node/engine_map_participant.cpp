@@ -59,6 +59,7 @@ void EngineMapParticipant::publishOutputs(const ros::Time& t) {
   v.nox_mass_flow_kg_s = o.gas.nox_mass_flow_kg_s;
   v.nox_mass_kg = o.nox_mass_kg;
   v.heat_to_coolant_W = o.gas.coolant_heat_W;
+  v.heat_to_coolant_J = o.coolant_heat_J;
   ports_.publish(t, v);
 }
 

@@ -113,6 +113,10 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
   s.engine_work_j = en.engine_J;
   s.em_work_j = en.em_J;
   s.aux_work_j = en.aux_J;
+  s.fan_work_j = en.fan_J;
+  s.aux_steering_work_j = en.steering_J;
+  s.aux_pneumatic_work_j = en.pneumatic_J;
+  s.aux_electric_work_j = en.electric_J;
   s.gearbox_drag_loss_j = en.gearbox_drag_J;
   s.converter_loss_j = en.tc_loss_J;
   s.gear_loss_j = en.gear_load_loss_J;

@@ -1,0 +1,216 @@
+"""Mission energy ledger of a run, from fuel energy to every sink, computed from the bag.
+
+Three balances, each from the cumulative energies the participants book themselves [J]:
+
+  fuel:    m_fuel LHV            = W_engine,net + Q_coolant + Q_exhaust+other
+  crank:   W_engine,net          = W_crank,engine + delay        (engine's own work vs work the
+                                   driveline received: they differ by the one-exchange delay)
+  driveline (vehicle_model.hpp):
+           W_crank,engine + W_em = aux (steering, pneumatic, electric, fan) + gearbox drag
+                                   + converter + gear load + retarder + axle + shift
+                                   + rolling + aero + grade (potential) + friction brakes
+                                   + kinetic change + residual
+
+Q_coolant is the engine model's own integral of heat to coolant; Q_exhaust+other is what the
+fuel energy leaves after brake work and coolant heat (exhaust enthalpy, radiation, unburned fuel),
+so the fuel balance closes by definition; the driveline balance is checked: its residual is
+computed here from the individual terms, not taken from the vehicle's own residual field.
+The ledger is a flat dict of kWh designed to grow (e-machine, battery, pump: add keys to
+SINKS/SOURCES). Fuel LHV 42.7 MJ/kg (VECTO declaration value, diesel B7).
+"""
+import math
+
+import numpy as np
+
+J_PER_KWH = 3.6e6
+LHV_J_KG = 42.7e6
+STANDSTILL_M_S = 0.5 / 3.6  # a stopped bus (same threshold as the stop check of the report)
+
+# (ledger key, VehicleState field, label) of every driveline sink, in the order of the report.
+DRIVELINE_SINKS = [
+    ("aux_steering", "aux_steering_work_j", "steering pump"),
+    ("aux_pneumatic", "aux_pneumatic_work_j", "pneumatic system (air compressor)"),
+    ("aux_electric", "aux_electric_work_j", "electric system (alternator)"),
+    ("fan", "fan_work_j", "cooling fan"),
+    ("gearbox_drag", "gearbox_drag_loss_j", "gearbox drag"),
+    ("converter", "converter_loss_j", "torque converter + lock-up slip"),
+    ("gear_load", "gear_loss_j", "gear load-dependent loss"),
+    ("retarder", "retarder_loss_j", "retarder drag"),
+    ("axle", "axle_loss_j", "axle loss"),
+    ("shift", "shift_loss_j", "gear-change clutch slip"),
+    ("rolling", "rolling_loss_j", "tyre rolling resistance"),
+    ("aero", "aero_loss_j", "aerodynamic drag"),
+    ("grade", "potential_energy_j", "grade (potential energy gained)"),
+    ("friction_brakes", "friction_brake_loss_j", "friction brakes"),
+    ("kinetic_change", "kinetic_energy_change_j", "kinetic energy change"),
+]
+# Groups for the picture (sinks of the driveline balance).
+GROUPS = [
+    ("auxiliaries", ["aux_steering", "aux_pneumatic", "aux_electric", "fan"]),
+    ("driveline losses", ["gearbox_drag", "converter", "gear_load", "retarder", "axle", "shift"]),
+    ("road loads", ["rolling", "aero", "grade"]),
+    ("friction brakes", ["friction_brakes"]),
+    ("kinetic change", ["kinetic_change"]),
+]
+FUEL_STATES = ["idle_at_stop", "traction", "coasting_motoring", "shifting"]
+
+
+def _last(d, field, default=0.0):
+    if d is None or field not in d or len(d[field]) == 0:
+        return default
+    return float(d[field][-1])
+
+
+def energy_ledger(data):
+    """{key: kWh} of the run; None when the bag lacks the vehicle or engine state."""
+    veh, eng, heat = data.get("/vehicle/state"), data.get("/engine/state"), data.get("/engine/heat")
+    if veh is None or eng is None:
+        return None
+    L = {}
+    fuel_J = _last(eng, "fuel_mass_kg") * LHV_J_KG
+    pos_J, mot_J = _last(eng, "positive_work_j"), _last(eng, "motoring_work_j")
+    net_J = pos_J + mot_J
+    coolant_J = _last(heat, "heat_to_coolant_j")
+    L["fuel_chemical"] = fuel_J
+    L["engine_positive"] = pos_J
+    L["engine_motoring"] = mot_J
+    L["engine_net"] = net_J
+    L["engine_heat_to_coolant"] = coolant_J
+    L["engine_exhaust_and_other"] = fuel_J - net_J - coolant_J
+    crank_engine_J = _last(veh, "engine_work_j")
+    L["crank_engine"] = crank_engine_J
+    L["crank_em"] = _last(veh, "em_work_j")
+    L["coupling_delay"] = net_J - crank_engine_J
+    sinks = 0.0
+    for key, field, _ in DRIVELINE_SINKS:
+        L[key] = _last(veh, field)
+        sinks += L[key]
+    L["aux_total"] = _last(veh, "aux_work_j")
+    L["residual"] = crank_engine_J + L["crank_em"] - sinks
+    return {k: v / J_PER_KWH for k, v in L.items()}
+
+
+def ledger_closure(L):
+    """Driveline residual relative to the energy the crank received [-] (0 if nothing moved)."""
+    src = abs(L["crank_engine"]) + abs(L["crank_em"])
+    return abs(L["residual"]) / src if src > 0 else 0.0
+
+
+def operating_state(veh, eng):
+    """Per bag sample: index into FUEL_STATES. Standstill -> idle at stop; a gear change in
+    progress (drive_mode 3) -> shifting; engine brake torque <= 0 while moving (overrun, fuel
+    cut or engine braking) -> coasting/motoring; otherwise traction."""
+    n = min(len(veh["t"]), len(eng["t"]))
+    v = veh["speed_m_s"][:n]
+    mode = veh["drive_mode"][:n]
+    T = eng["brake_torque_nm"][:n]
+    st = np.full(n, FUEL_STATES.index("traction"))
+    st[T <= 0.0] = FUEL_STATES.index("coasting_motoring")
+    st[mode == 3] = FUEL_STATES.index("shifting")
+    st[v < STANDSTILL_M_S] = FUEL_STATES.index("idle_at_stop")
+    return st
+
+
+def fuel_by_state(data):
+    """({state: kg}, {state: s}): the fuel burnt between two bag samples is booked to the state
+    at the end of the interval (the state the engine ran in), so the kg add up to the total
+    exactly."""
+    veh, eng = data.get("/vehicle/state"), data.get("/engine/state")
+    if veh is None or eng is None or len(eng["t"]) < 2:
+        return None, None
+    st = operating_state(veh, eng)
+    n = len(st)
+    dm = np.diff(eng["fuel_mass_kg"][:n])
+    dt = np.diff(eng["t"][:n])
+    fuel = {s: float(np.sum(dm[st[1:] == i])) + (float(eng["fuel_mass_kg"][0]) if i == st[0] else 0.0)
+            for i, s in enumerate(FUEL_STATES)}
+    time = {s: float(np.sum(dt[st[1:] == i])) for i, s in enumerate(FUEL_STATES)}
+    return fuel, time
+
+
+def all_finite(d):
+    return all(isinstance(v, (int, float)) and math.isfinite(v) for v in d.values())
+
+
+def ledger_table(L):
+    """Markdown lines of the ledger."""
+    fuel = L["fuel_chemical"]
+    pct = (lambda x: "%.1f" % (100.0 * x / fuel)) if fuel > 0 else (lambda x: "")
+    rows = [("fuel chemical energy (LHV 42.7 MJ/kg)", "fuel_chemical"),
+            ("engine heat to coolant", "engine_heat_to_coolant"),
+            ("engine exhaust and other losses", "engine_exhaust_and_other"),
+            ("engine brake work, net", "engine_net"),
+            ("  of which positive", "engine_positive"),
+            ("  of which motoring (driven by the driveline)", "engine_motoring"),
+            ("exchange delay (engine's work - work at the crank)", "coupling_delay"),
+            ("engine work received by the driveline", "crank_engine"),
+            ("e-machine work at the crank", "crank_em")]
+    rows += [(label, key) for key, _, label in DRIVELINE_SINKS]
+    rows += [("residual of the driveline balance", "residual")]
+    out = ["| path | kWh | % of fuel |", "|---|---|---|"]
+    for label, key in rows:
+        out.append("| %s | %.3f | %s |" % (label, L[key], pct(L[key])))
+    out.append("")
+    out.append("Driveline balance closes to %.2e of the crank work." % ledger_closure(L))
+    return out
+
+
+def plot_ledger(L, path):
+    """Stacked bars: fuel energy -> engine heat + brake work; crank work -> sinks."""
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(9, 5))
+    bars = [
+        ("fuel", [("heat to coolant", L["engine_heat_to_coolant"]),
+                  ("exhaust + other", L["engine_exhaust_and_other"]),
+                  ("brake work (net)", L["engine_net"])]),
+        ("crank", [(g, sum(L[k] for k in keys)) for g, keys in GROUPS]),
+        ("driveline losses", [(label, L[key]) for key, _, label in DRIVELINE_SINKS[4:10]]),
+        ("wheels", [(label, L[key]) for key, _, label in DRIVELINE_SINKS[10:]]),
+    ]
+    cmap = plt.get_cmap("tab20")
+    c = 0
+    for x, (name, parts) in enumerate(bars):
+        bottom = 0.0
+        for label, val in parts:
+            if val <= 0:
+                continue
+            ax.bar(x, val, bottom=bottom, color=cmap(c % 20), edgecolor="white", width=0.6)
+            if val > 0.02 * L["fuel_chemical"]:
+                ax.text(x, bottom + val / 2, "%s\n%.1f" % (label, val), ha="center", va="center", fontsize=7)
+            bottom += val
+            c += 1
+    ax.set_xticks(range(len(bars)))
+    ax.set_xticklabels([b[0] for b in bars])
+    ax.set_ylabel("energy [kWh]")
+    ax.set_title("Where the mission's energy goes (negative terms, e.g. motoring, not drawn)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def plot_operating_map(data, path):
+    """Share of time and of fuel over engine speed x brake torque (2-D histograms)."""
+    import matplotlib.pyplot as plt
+    eng = data.get("/engine/state")
+    if eng is None or len(eng["t"]) < 2:
+        return False
+    rpm = eng["engine_speed_rad_s"][1:] * 60.0 / (2.0 * math.pi)
+    T = eng["brake_torque_nm"][1:]
+    dt = np.diff(eng["t"])
+    dm = np.diff(eng["fuel_mass_kg"])
+    xb = np.linspace(500, 2500, 41)
+    yb = np.linspace(min(-300.0, float(T.min())), max(1200.0, float(T.max())), 41)
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
+    for ax, w, title in ((axes[0], dt, "time share [%]"), (axes[1], dm, "fuel share [%]")):
+        tot = float(np.sum(w))
+        H, _, _ = np.histogram2d(rpm, T, bins=[xb, yb], weights=w)
+        H = 100.0 * H / tot if tot > 0 else H
+        m = ax.pcolormesh(xb, yb, np.ma.masked_less_equal(H.T, 0.0), cmap="viridis")
+        fig.colorbar(m, ax=ax)
+        ax.plot(rpm, eng["torque_max_nm"][1:], ",", color="0.6")
+        ax.set(xlabel="engine speed [rpm]", title=title)
+    axes[0].set_ylabel("brake torque [Nm]")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return True
