@@ -1,10 +1,14 @@
 // The engine's outputs as messages, shared by every engine model's participant (map and 1D):
 // one place that fills EngineState, ExhaustState and EngineHeat from model-neutral values (SI).
 #pragma once
+#include <hybrid_bus_twin/AftertreatmentState.h>
+#include <hybrid_bus_twin/CoolingState.h>
 #include <hybrid_bus_twin/EngineHeat.h>
 #include <hybrid_bus_twin/EngineState.h>
 #include <hybrid_bus_twin/ExhaustState.h>
 #include <ros/ros.h>
+
+#include "cosim/input_buffer.hpp"
 
 namespace hbt::cosim {
 
@@ -17,6 +21,23 @@ struct EnginePortValues {
   double y_O2 = 0, y_CO2 = 0, y_H2O = 0, y_N2 = 0;              // mass fractions [-]
   double nox_mass_flow_kg_s = 0, nox_mass_kg = 0;               // as NO2
   double heat_to_coolant_W = 0, heat_to_coolant_J = 0;           // [W], cumulative [J]
+  double coolant_T_K = 0, back_pressure_Pa = 0;  // loop inputs the engine used (0 = none)
+  double friction_correction_Nm = 0, pumping_correction_Nm = 0;  // map engine: cold oil, back-pressure
+};
+
+/// The engine's closed loops with the thermal nodes: coolant temperature from /cooling/state and
+/// turbine-outlet back-pressure from /aftertreatment/state, each read (stamped t_k) only when the
+/// scenario runs that node: private parameters loops/cooling and loops/aftertreatment (bool, set
+/// by launch/include/engine.launch). Without them the engine keeps its own defaults.
+struct EngineLoopInputs {
+  Input<hybrid_bus_twin::CoolingState>* cooling = nullptr;
+  Input<hybrid_bus_twin::AftertreatmentState>* aftertreatment = nullptr;
+  double coolantAt(const ros::Time& t, double fallback_K) const {
+    return cooling ? cooling->at(t).coolant_ht_temperature_k : fallback_K;
+  }
+  double backPressureAt(const ros::Time& t) const {
+    return aftertreatment ? aftertreatment->at(t).back_pressure_pa : 0.0;
+  }
 };
 
 /// Publishers of /engine/state, /engine/exhaust, /engine/heat (advertised by the participant
@@ -41,6 +62,10 @@ class EnginePorts {
     s.turbo_speed_rad_s = v.turbo_speed_rad_s;
     s.lambda = v.lambda;
     s.cpu_time_s = v.cpu_time_s;
+    s.coolant_temperature_k = v.coolant_T_K;
+    s.back_pressure_pa = v.back_pressure_Pa;
+    s.friction_correction_nm = v.friction_correction_Nm;
+    s.pumping_correction_nm = v.pumping_correction_Nm;
     state_.publish(s);
     hybrid_bus_twin::ExhaustState x;
     x.header.stamp = t;

@@ -1,5 +1,7 @@
 #include "cylinder/losses.hpp"
 
+#include "common/oil_viscosity.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -35,9 +37,7 @@ void WallTemperatures::evaluate(double Tc, double load, double& head, double& li
 }
 
 double ChenFlynn::viscosityFactor(double Tc) const {
-  const double T = std::max(Tc + oil_minus_coolant_K, vogel_c_K + 60.0);
-  const double ratio = std::exp(vogel_b_K / (T - vogel_c_K) - vogel_b_K / (T_oil_ref_K - vogel_c_K));
-  return std::pow(ratio, visc_exponent);
+  return oilViscosityFactor(Tc + oil_minus_coolant_K, T_oil_ref_K, vogel_b_K, vogel_c_K, visc_exponent);
 }
 
 double ChenFlynn::fmep_Pa(double pmax_Pa, double cm, double Tc) const {

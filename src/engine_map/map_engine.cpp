@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/oil_viscosity.hpp"
 #include "common/units.hpp"
 
 namespace hbt::engine_map {
@@ -43,6 +44,17 @@ void MapEngineParams::declare(ParamSet& ps) {
   ps.add("air_R_J_kgK", g.air_R_J_kgK, "J/(kg K)", 280.0, 295.0, "air gas constant");
   ps.add("fuel_h_to_c_molar", g.fuel_h_to_c_molar, "-", 1.5, 2.2, "H/C molar ratio of the diesel");
   ps.add("fuel_lhv_J_kg", g.fuel_lhv_J_kg, "J/kg", 4.0e7, 4.5e7, "lower heating value");
+  ps.add("friction_share_of_motoring", friction_share_of_motoring, "-", 0.0, 1.0,
+         "share of the motoring torque that is mechanical friction (cold-oil correction)");
+  ps.add("oil_minus_coolant_K", oil_minus_coolant_K, "K", -20.0, 40.0, "oil minus coolant temperature");
+  ps.add("oil_ref_K", oil_ref_K, "K", 300.0, 420.0, "oil temperature of the warm map");
+  ps.add("oil_vogel_b_K", oil_vogel_b_K, "K", 100.0, 5000.0, "Vogel b of the oil viscosity");
+  ps.add("oil_vogel_c_K", oil_vogel_c_K, "K", 0.0, 250.0, "Vogel c of the oil viscosity");
+  ps.add("oil_viscosity_exponent", oil_viscosity_exponent, "-", 0.0, 1.0, "friction ∝ viscosity^n");
+  ps.add("back_pressure_ref_rated_Pa", back_pressure_ref_rated_Pa, "Pa", 0.0, 1e5,
+         "over-pressure at the turbine outlet the map was measured with, at rated exhaust flow");
+  ps.add("back_pressure_ref_exponent", back_pressure_ref_exponent, "-", 0.5, 3.0,
+         "reference back-pressure ∝ exhaust flow^n");
   ps.add("nox_emission_index_kg_per_kg", g.nox_emission_index_kg_per_kg, "kg/kg", 0.0, 0.1,
          "engine-out NOx (as NO2) per kg fuel");
 }
@@ -69,6 +81,8 @@ MapEngine::MapEngine(const MapEngineParams& p, const std::string& base_dir) : p_
   double w_rated = 0.0;
   engine_map::peakPower(fld_, &w_rated);
   fuel_ref_kg_s_ = steadyFuel(w_rated, fullLoadTorque(w_rated));
+  exhaust_ref_kg_s_ = computeGasPath(p_.gas, w_rated, fullLoadTorque(w_rated), 1.0, fuel_ref_kg_s_,
+                                     fuel_ref_kg_s_, 298.15, 101325.0).exhaust_mass_flow_kg_s;
   if (!(fuel_ref_kg_s_ > 0.0))
     throw InputError(map_pts_.source, "fuel consumption", "no positive fuel flow at rated power");
   const auto checkPositive = [](double v, const char* key) {
@@ -126,7 +140,20 @@ const MapEngineOutputs& MapEngine::step(double dt, const MapEngineInputs& in) {
       !std::isfinite(in.ambient_T_K) || !std::isfinite(in.ambient_p_Pa) || !(dt > 0.0))
     throw ModelDivergence("map engine", "inputs", "non-finite input or dt <= 0");
   const double w = std::max(in.speed_rad_s, 0.0);
-  const double tfl = fullLoadTorque(w), tmot = motoringTorque(w);
+  const double dT_fric = in.coolant_T_K > 0.0
+      ? p_.friction_share_of_motoring * std::fabs(motoringTorque(w)) *
+            (oilViscosityFactor(in.coolant_T_K + p_.oil_minus_coolant_K, p_.oil_ref_K,
+                                p_.oil_vogel_b_K, p_.oil_vogel_c_K, p_.oil_viscosity_exponent) - 1.0)
+      : 0.0;
+  double dT_pump = 0.0;
+  if (in.back_pressure_Pa > 0.0 && exhaust_ref_kg_s_ > 0.0) {
+    const double x = std::max(out_.gas.exhaust_mass_flow_kg_s, 0.0) / exhaust_ref_kg_s_;
+    const double p_ref = in.ambient_p_Pa + p_.back_pressure_ref_rated_Pa * std::pow(x, p_.back_pressure_ref_exponent);
+    const double pi_T = std::max(1.0, out_.gas.pressure_ratio);
+    dT_pump = (in.back_pressure_Pa - p_ref) * pi_T * p_.gas.displacement_m3 / (4.0 * units::kPi);
+  }
+  const double dT = dT_fric + dT_pump;
+  const double tfl = fullLoadTorque(w) - dT, tmot = motoringTorque(w) - dT;
   const double tau = timeConstant(w);
   const double prev = torque_;
   double upper = tfl;
@@ -140,7 +167,7 @@ const MapEngineOutputs& MapEngine::step(double dt, const MapEngineInputs& in) {
   const bool cut = !in.fuel_enabled || in.torque_request_Nm <= tmot;
   const double req = cut ? tmot : in.torque_request_Nm;
   torque_ = std::clamp(req, lower, upper);
-  const double mf = (cut || torque_ <= tmot) ? 0.0 : steadyFuel(w, torque_);
+  const double mf = (cut || torque_ <= tmot) ? 0.0 : steadyFuel(w, torque_ + dT);
 
   out_.brake_torque_Nm = torque_;
   out_.fuel_mass_flow_kg_s = mf;
@@ -148,6 +175,8 @@ const MapEngineOutputs& MapEngine::step(double dt, const MapEngineInputs& in) {
   out_.min_torque_Nm = tmot;
   out_.dynamic_max_torque_Nm = upper;
   out_.time_constant_s = tau;
+  out_.friction_correction_Nm = dT_fric;
+  out_.pumping_correction_Nm = dT_pump;
   out_.fuel_cut = mf <= 0.0;
   out_.gas = computeGasPath(p_.gas, w, torque_, tfl > 0.0 ? torque_ / tfl : 0.0, mf,
                             fuel_ref_kg_s_, in.ambient_T_K, in.ambient_p_Pa);

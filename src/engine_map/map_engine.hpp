@@ -21,6 +21,18 @@
 //                                        s = min(1, ω/ω_min) (cranking/stall region below the
 //                                        lowest map speed, where T_fl and T_mot fade linearly to 0)
 // Gas path, coolant heat and NOx: gas_path.hpp. Fuel energy ṁ_f·LHV.
+//
+// Cold engine and exhaust back-pressure (the map was measured warm, at the bench's back-pressure):
+// the engine needs an extra indicated torque ΔT [Nm] for the same brake torque,
+//   ΔT_fric = s_f |T_mot(ω)| (φ(T_c + ΔT_oil) − 1)     φ = oil viscosity factor (oil_viscosity.hpp)
+//   ΔT_pump = (p_b − p_b,ref(ṁ_x)) π_T V_d / (4π)       p_b,ref − p_amb = Δp_r (ṁ_x/ṁ_x,r)^n_b
+//   ΔT = ΔT_fric + ΔT_pump;  T_fl → T_fl − ΔT,  T_mot → T_mot − ΔT,  ṁ_f = F(ω, T_k + ΔT)
+// s_f = share of the motoring torque that is mechanical friction; a turbine-outlet pressure rise
+// Δp raises the turbine-inlet (exhaust-manifold) pressure by about π_T Δp at an unchanged
+// expansion ratio (π_T ≈ the boost pressure ratio of the last step), and PMEP rises by that
+// (Heywood 1988 §13.2: PMEP ≈ p_exhaust − p_intake). p_b,ref is the back-pressure the map was
+// measured with (bench set to the installed ATS at rated flow ṁ_x,r). Inputs coolant_T_K <= 0
+// or back_pressure_Pa <= 0 switch the respective correction off (no cooling / ATS node).
 // Outputs are valid for the step just taken; no allocation in step().
 #pragma once
 #include <string>
@@ -44,6 +56,15 @@ struct MapEngineParams {
   double pt1_time_constant_factor = 1.0;   // multiplier on the VECTO PT1 τ [-]
   double torque_decrease_time_constant_s = 0.0;  // τ_dec [s]; 0 = instantaneous decrease
   GasPathParams gas;
+  // Cold-engine friction (same oil law and constants as the 1D engine's Chen-Flynn friction).
+  double friction_share_of_motoring = 0.75;   // s_f [-]
+  double oil_minus_coolant_K = 5.0;           // ΔT_oil [K]
+  double oil_ref_K = 363.15;                  // oil temperature of the (warm) map [K]
+  double oil_vogel_b_K = 1170.0, oil_vogel_c_K = 150.0;
+  double oil_viscosity_exponent = 0.25;       // n [-]
+  // Back-pressure the map was measured with: Δp_r at rated exhaust flow, exponent n_b.
+  double back_pressure_ref_rated_Pa = 15000.0;
+  double back_pressure_ref_exponent = 1.5;
   /// Registers every parameter (key names = config/engine_map.yaml).
   void declare(ParamSet& ps);
 };
@@ -54,6 +75,8 @@ struct MapEngineInputs {
   double ambient_T_K = 298.15;       // ambient = air-filter inlet temperature [K]
   double ambient_p_Pa = 101325.0;    // ambient pressure [Pa]
   bool fuel_enabled = true;          // false = engine off / fuel cut (torque = motoring)
+  double coolant_T_K = 0.0;          // engine coolant temperature [K]; <= 0: warm map, no correction
+  double back_pressure_Pa = 0.0;     // turbine-outlet (ATS inlet) pressure [Pa]; <= 0: map's own
 };
 
 struct MapEngineOutputs {
@@ -63,6 +86,8 @@ struct MapEngineOutputs {
   double min_torque_Nm = 0.0;          // motoring torque at ω [Nm] (< 0)
   double dynamic_max_torque_Nm = 0.0;  // PT1-limited available torque this step [Nm]
   double time_constant_s = 0.0;        // τ(ω) used [s]
+  double friction_correction_Nm = 0.0; // ΔT_fric (cold oil) [Nm]
+  double pumping_correction_Nm = 0.0;  // ΔT_pump (back-pressure vs the map's) [Nm]
   bool fuel_cut = false;               // overrun / engine-off fuel cut active
   GasPathState gas;                    // air path, exhaust flow/T/composition, heat split, NOx
   // Cumulative since reset():
@@ -111,6 +136,7 @@ class MapEngine {
   Table1D t_fl_, t_mot_, pt1_;
   double w_min_ = 0.0, w_max_ = 0.0;
   double fuel_ref_kg_s_ = 0.0;  // fuel at the rated (peak-power) full-load point
+  double exhaust_ref_kg_s_ = 0.0;  // exhaust flow at the rated point (ambient 25 °C) [kg/s]
   double torque_ = 0.0;
   MapEngineOutputs out_;
 };

@@ -22,6 +22,11 @@ void Engine1DParticipant::configure() {
   speed_rad_s_ = units::rpmToRadps(700.0);
   engine_->reset(speed_rad_s_, 0.0, ambient_T_K_, 101325.0, coolant_T_K_);
   command_ = &addInput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
+  bool cooling = false, ats = false;
+  pnh_.param("loops/cooling", cooling, false);
+  pnh_.param("loops/aftertreatment", ats, false);
+  if (cooling) loops_.cooling = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
+  if (ats) loops_.aftertreatment = &addInput<hybrid_bus_twin::AftertreatmentState>("/aftertreatment/state");
   ports_ = cosim::EnginePorts(addOutput<hybrid_bus_twin::EngineState>("/engine/state"),
                               addOutput<hybrid_bus_twin::ExhaustState>("/engine/exhaust"),
                               addOutput<hybrid_bus_twin::EngineHeat>("/engine/heat"));
@@ -34,8 +39,9 @@ void Engine1DParticipant::step(const ros::Time& t, double dt_s) {
   in.torque_request_Nm = cmd.torque_request_nm;
   in.ambient_T_K = cmd.ambient_temperature_k > 0.0 ? cmd.ambient_temperature_k : ambient_T_K_;
   in.ambient_p_Pa = cmd.ambient_pressure_pa > 0.0 ? cmd.ambient_pressure_pa : 101325.0;
-  in.back_pressure_Pa = 0.0;  // default orifice model until the aftertreatment node exists
-  in.coolant_T_K = coolant_T_K_;
+  // <= 0 (no ATS node): the engine's own documented orifice model of the exhaust system
+  in.back_pressure_Pa = back_pressure_Pa_ = loops_.backPressureAt(t);
+  in.coolant_T_K = used_coolant_T_K_ = loops_.coolantAt(t, coolant_T_K_);
   in.fuel_enabled = cmd.engine_on;
   speed_rad_s_ = in.speed_rad_s;
   engine_->step(dt_s, in);
@@ -65,6 +71,8 @@ void Engine1DParticipant::publishOutputs(const ros::Time& t) {
   v.nox_mass_flow_kg_s = o.nox_mass_flow_kg_s;
   v.nox_mass_kg = o.nox_mass_kg;
   v.heat_to_coolant_W = o.coolant_heat_W;
+  v.coolant_T_K = loops_.cooling ? used_coolant_T_K_ : 0.0;
+  v.back_pressure_Pa = back_pressure_Pa_;
   v.heat_to_coolant_J = o.coolant_heat_J;
   ports_.publish(t, v);
 }

@@ -1,11 +1,14 @@
 // ROS bridge of the crank-angle-resolved 1D engine (engine_model:=1d): converts messages and
 // parameters, nothing else. Model: hbt::engine_1d::Engine1D (../engine_1d.hpp).
 //
-// Inputs  (stamped t_k): /vehicle/engine_command (imposed speed, torque request, ambient).
+// Inputs  (stamped t_k): /vehicle/engine_command (imposed speed, torque request, ambient);
+//                        /cooling/state (coolant -> friction, wall temperatures) and
+//                        /aftertreatment/state (back-pressure -> turbine-outlet boundary) when
+//                        loops/cooling and loops/aftertreatment are set (engine_ports.hpp).
 // Outputs (stamped t_k): /engine/state, /engine/exhaust, /engine/heat (same as the map engine).
 // Parameters: `config_file` = config/engine_1d.yaml, read from disk with the files it names
 // (cylinder, turbo, reference map) so that errors name each file and key; `solver` (fsm|tvd,
-// optional) overrides engine_1d/solver. Until the aftertreatment and cooling nodes exist the
+// optional) overrides engine_1d/solver. Without the aftertreatment and cooling nodes the
 // back-pressure comes from the model's documented constant-orifice default and the coolant is
 // at the model's thermostat temperature (Engine1DInputs::coolant_T_K, 363.15 K).
 #pragma once
@@ -33,7 +36,9 @@ class Engine1DParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::EngineCommand>* command_ = nullptr;
   cosim::EnginePorts ports_;
   double speed_rad_s_ = 0.0, ambient_T_K_ = 298.15;
-  const double coolant_T_K_ = Engine1DInputs{}.coolant_T_K;  // until the cooling node exists
+  const double coolant_T_K_ = Engine1DInputs{}.coolant_T_K;  // warm default without a cooling node
+  cosim::EngineLoopInputs loops_;
+  double used_coolant_T_K_ = 0.0, back_pressure_Pa_ = 0.0;  // loop inputs of the last step
 };
 
 }  // namespace hbt::engine1d

@@ -19,6 +19,11 @@ void EngineMapParticipant::configure() {
   speed_rad_s_ = engine_->minMapSpeed();
   engine_->reset(speed_rad_s_, 0.0, ambient_T_K_);
   command_ = &addInput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
+  bool cooling = false, ats = false;
+  pnh_.param("loops/cooling", cooling, false);
+  pnh_.param("loops/aftertreatment", ats, false);
+  if (cooling) loops_.cooling = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
+  if (ats) loops_.aftertreatment = &addInput<hybrid_bus_twin::AftertreatmentState>("/aftertreatment/state");
   ports_ = cosim::EnginePorts(addOutput<hybrid_bus_twin::EngineState>("/engine/state"),
                               addOutput<hybrid_bus_twin::ExhaustState>("/engine/exhaust"),
                               addOutput<hybrid_bus_twin::EngineHeat>("/engine/heat"));
@@ -32,6 +37,8 @@ void EngineMapParticipant::step(const ros::Time& t, double dt_s) {
   in.ambient_T_K = cmd.ambient_temperature_k > 0.0 ? cmd.ambient_temperature_k : ambient_T_K_;
   in.ambient_p_Pa = cmd.ambient_pressure_pa > 0.0 ? cmd.ambient_pressure_pa : 101325.0;
   in.fuel_enabled = cmd.engine_on;
+  in.coolant_T_K = coolant_T_K_ = loops_.coolantAt(t, 0.0);
+  in.back_pressure_Pa = back_pressure_Pa_ = loops_.backPressureAt(t);
   speed_rad_s_ = in.speed_rad_s;
   engine_->step(dt_s, in);
 }
@@ -41,8 +48,13 @@ void EngineMapParticipant::publishOutputs(const ros::Time& t) {
   cosim::EnginePortValues v;
   v.speed_rad_s = speed_rad_s_;
   v.brake_torque_Nm = o.brake_torque_Nm;
-  v.max_torque_Nm = engine_->fullLoadTorque(speed_rad_s_);
-  v.min_torque_Nm = engine_->motoringTorque(speed_rad_s_);
+  const double dT = o.friction_correction_Nm + o.pumping_correction_Nm;  // cold oil + back-pressure
+  v.max_torque_Nm = engine_->fullLoadTorque(speed_rad_s_) - dT;
+  v.min_torque_Nm = engine_->motoringTorque(speed_rad_s_) - dT;
+  v.coolant_T_K = coolant_T_K_;
+  v.back_pressure_Pa = back_pressure_Pa_;
+  v.friction_correction_Nm = o.friction_correction_Nm;
+  v.pumping_correction_Nm = o.pumping_correction_Nm;
   v.fuel_mass_flow_kg_s = o.fuel_mass_flow_kg_s;
   v.fuel_mass_kg = o.fuel_mass_kg;
   v.positive_work_J = o.positive_work_J;

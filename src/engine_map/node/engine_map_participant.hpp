@@ -1,7 +1,8 @@
 // ROS bridge of the map-based engine (engine_model:=map): converts messages and parameters,
 // nothing else. Model: hbt::engine_map::MapEngine (../map_engine.hpp).
 //
-// Inputs  (stamped t_k): /vehicle/engine_command (EngineCommand: imposed speed, torque request).
+// Inputs  (stamped t_k): /vehicle/engine_command (EngineCommand: imposed speed, torque request);
+//                        /cooling/state, /aftertreatment/state when loops/cooling, loops/aftertreatment.
 // Outputs (stamped t_k): /engine/state (EngineState), /engine/exhaust (ExhaustState),
 //                        /engine/heat (EngineHeat).
 // Parameters: private namespace = config/engine_map.yaml; /scenario/ambient_temperature_c.
@@ -29,6 +30,8 @@ class EngineMapParticipant : public cosim::Participant {
   std::unique_ptr<MapEngine> engine_;
   cosim::Input<hybrid_bus_twin::EngineCommand>* command_ = nullptr;
   cosim::EnginePorts ports_;
+  cosim::EngineLoopInputs loops_;
+  double coolant_T_K_ = 0.0, back_pressure_Pa_ = 0.0;  // loop inputs of the last step
   double speed_rad_s_ = 0.0, ambient_T_K_ = 298.15, last_cpu_s_ = 0.0;
 };
 
