@@ -1,8 +1,12 @@
 #!/usr/bin/python3
-"""Results of one run of the twin: DIR/summary.json, DIR/report.md and PNG plots, computed from
-DIR/run.bag (analysed by header.stamp) and DIR/status.json (written by the master stepper).
+"""Results of one run of the twin: summary.json, report.md and PNG plots, computed from the bag
+alone (analysed by header.stamp).
 
-Usage: postprocess.py DIR --scenario NAME [name:=value ...]   (the launch arguments of the run)
+  postprocess.py DIR --scenario NAME [name:=value ...]   end of a run (scripts/twin run): stores
+      the run's metadata in DIR/run.bag as topic /twin/run_info (std_msgs/String, JSON: scenario,
+      launch arguments, DIR/status.json of the stepper, DIR/stops.csv), then reports from the bag
+  postprocess.py --bag BAG [--out DIR]                   scripts/twin report: the same report from
+      any bag a run wrote (default DIR = the bag's folder); identical output
 Exit status: 0 if the run completed, 1 if it was aborted (the message names the failing node).
 
 Fuel: diesel, density 0.835 kg/L at 15 degC (EN 590 allows 0.820-0.845; VECTO's reference fuel
@@ -23,12 +27,40 @@ DIESEL_DENSITY_KG_L = 0.835
 J_PER_KWH = 3.6e6
 
 
+RUN_INFO_TOPIC = "/twin/run_info"
+
+
+def store_run_info(bag_path, info):
+    """Appends the run's metadata (dict) to the bag as one std_msgs/String (JSON)."""
+    import rosbag
+    import rospy
+    from std_msgs.msg import String
+    with rosbag.Bag(bag_path) as bag:
+        t_end = bag.get_end_time() if bag.get_message_count() else 1e-9
+    with rosbag.Bag(bag_path, "a") as bag:
+        bag.write(RUN_INFO_TOPIC, String(data=json.dumps(info, sort_keys=True)), rospy.Time.from_sec(t_end))
+
+
+def read_run_info(bag_path):
+    import rosbag
+    info = None
+    with rosbag.Bag(bag_path) as bag:
+        for _, msg, _ in bag.read_messages(topics=[RUN_INFO_TOPIC]):
+            info = json.loads(msg.data)
+    if info is None:
+        sys.exit("twin: %s has no %s (not written by scripts/twin run, or the run did not end)"
+                 % (bag_path, RUN_INFO_TOPIC))
+    return info
+
+
 def read_bag(path):
     """{topic: {field: np.array}} with 't' = header.stamp [s]; numeric fields only."""
     import rosbag
     data = {}
     with rosbag.Bag(path) as bag:
         for topic, msg, _ in bag.read_messages():
+            if topic == RUN_INFO_TOPIC:
+                continue
             d = data.setdefault(topic, {"t": []})
             d["t"].append(msg.header.stamp.to_sec())
             for f in msg.__slots__:
@@ -48,14 +80,15 @@ def launch_args(pairs):
     return out
 
 
-def stops_served(veh, stops_path):
-    """Stops of the mission (stops.csv, written by the vehicle node from the time-based profile).
+def stops_served(veh, stops_csv):
+    """Stops of the mission (text of stops.csv, written by the vehicle node from the profile).
     A stop is served when the bus stands still (< 0.5 km/h) for at least 90 % of the stop time
     within the profile's window [t_start, t_start + stop time + 2 s]. Returns (served, total,
     max distance between the standstill position and the stop position [m])."""
-    if not os.path.exists(stops_path):
+    if not stops_csv:
         return None, None, None
-    stops = np.loadtxt(stops_path, delimiter=",", skiprows=1, ndmin=2)
+    import io
+    stops = np.loadtxt(io.StringIO(stops_csv), delimiter=",", skiprows=1, ndmin=2)
     t, v, s = veh["t"], veh["speed_m_s"], veh["distance_m"]
     dt = np.diff(t, append=t[-1])
     still = v < 0.5 / 3.6
@@ -72,7 +105,7 @@ def stops_served(veh, stops_path):
     return served, total, max_pos_err
 
 
-def summarise(out, scenario, args, status, data):
+def summarise(scenario, args, status, data, stops_csv):
     veh = data.get("/vehicle/state")
     eng = data.get("/engine/state")
     s = {
@@ -80,6 +113,7 @@ def summarise(out, scenario, args, status, data):
         "architecture": args.get("architecture", "conventional"),
         "engine_model": args.get("engine", "map"),
         "ambient_c": float(args.get("ambient", 25.0)),
+        "aux_set": args.get("aux", "vecto_p1_example"),
         "macro_step_s": status["macro_step_s"],
         "sim_time_s": status["sim_time_s"],
         "wall_time_s": status["wall_time_s"],
@@ -92,13 +126,15 @@ def summarise(out, scenario, args, status, data):
     s.update({
         "distance_km": dist_m / 1000.0,
         "fuel_kg": fuel_kg,
-        "fuel_l_per_100km": fuel_kg / DIESEL_DENSITY_KG_L / (dist_m / 1e5) if dist_m > 0 else None,
+        # a consumption per distance means nothing over a few metres: only from 1 km on
+        "fuel_l_per_100km": fuel_kg / DIESEL_DENSITY_KG_L / (dist_m / 1e5) if dist_m >= 1000.0 else None,
         "engine_positive_kwh": eng["positive_work_j"][-1] / J_PER_KWH,
         "engine_motoring_kwh": eng["motoring_work_j"][-1] / J_PER_KWH,
         "speed_rmse_kmh": float(np.sqrt(np.mean(err ** 2))),
         "aux_kwh": veh["aux_work_j"][-1] / J_PER_KWH,
     })
-    served, total, pos_err = stops_served(veh, os.path.join(out, "stops.csv"))
+    s = {k: v for k, v in s.items() if v is not None}
+    served, total, pos_err = stops_served(veh, stops_csv)
     if total is not None:
         s["stops_served"], s["stops_total"] = served, total
         s["stop_position_error_max_m"] = pos_err
@@ -206,21 +242,47 @@ def report(out, s, status, files):
         fh.write("\n".join(lines) + "\n")
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("out")
-    ap.add_argument("--scenario", required=True)
-    ap.add_argument("args", nargs="*", help="launch arguments name:=value")
-    a = ap.parse_intermixed_args()
-    status = json.load(open(os.path.join(a.out, "status.json")))
-    bag = os.path.join(a.out, "run.bag")
-    data = read_bag(bag) if os.path.exists(bag) else {}
-    s = summarise(a.out, a.scenario, launch_args(a.args), status, data)
-    with open(os.path.join(a.out, "summary.json"), "w") as fh:
+def report_from_bag(bag, out):
+    """summary.json, report.md and plots in `out` from the bag alone; returns (status, summary)."""
+    info = read_run_info(bag)
+    status = info["status"]
+    data = read_bag(bag)
+    s = summarise(info["scenario"], info["args"], status, data, info.get("stops_csv", ""))
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "summary.json"), "w") as fh:
         json.dump(s, fh, indent=2)
         fh.write("\n")
-    files = plots(a.out, data)
-    report(a.out, s, status, files)
+    files = plots(out, data)
+    report(out, s, status, files)
+    return status, s
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("out", nargs="?")
+    ap.add_argument("--scenario")
+    ap.add_argument("--bag", help="report from this bag (scripts/twin report)")
+    ap.add_argument("args", nargs="*", help="launch arguments name:=value")
+    a = ap.parse_intermixed_args()
+    if a.bag:
+        if not os.path.exists(a.bag):
+            sys.exit("twin: no such bag: %s" % a.bag)
+        out = a.out or os.path.dirname(os.path.abspath(a.bag))
+        status, s = report_from_bag(a.bag, out)
+        print("twin: report of %s written to %s" % (a.bag, out))
+        return 0
+    if not a.out or not a.scenario:
+        ap.error("DIR and --scenario are required (or --bag BAG)")
+    status = json.load(open(os.path.join(a.out, "status.json")))
+    bag = os.path.join(a.out, "run.bag")
+    if not os.path.exists(bag):  # failed before the recorder opened its bag: status only
+        print("twin: run FAILED: %s" % status["message"], file=sys.stderr)
+        return 1
+    stops = os.path.join(a.out, "stops.csv")
+    info = {"scenario": a.scenario, "args": launch_args(a.args), "status": status,
+            "stops_csv": open(stops).read() if os.path.exists(stops) else ""}
+    store_run_info(bag, info)
+    status, s = report_from_bag(bag, a.out)
     if status["status"] != "ok":
         print("twin: run FAILED: %s" % status["message"], file=sys.stderr)
         return 1

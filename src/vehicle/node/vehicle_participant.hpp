@@ -2,7 +2,9 @@
 // and parameters, nothing else. Models: hbt::vehicle::VehicleModel (../vehicle_model.hpp) and the
 // mission pre-processor hbt::mission::buildMissionProfile (src/mission), run once at start-up.
 //
-// Inputs  (stamped t_k): /engine/state (EngineState: brake torque, torque limits).
+// Inputs  (stamped t_k): /engine/state (EngineState: brake torque, torque limits);
+//                        /cooling/state (CoolingState: fan shaft power on the crank) when the
+//                        private parameter loops/cooling is set (else aux/fan_default_W).
 // Outputs (stamped t_k): /vehicle/state (VehicleState), /vehicle/engine_command (EngineCommand),
 //                        /vehicle/to_cooling (VehicleToCooling).
 // Parameters: private namespace = config/vehicle.yaml, private group `mission/` =
@@ -12,6 +14,7 @@
 // Side outputs at start-up: <out_dir>/profile.csv (time-based target profile) and
 // <out_dir>/stops.csv (stop positions and times); /sim/mission_duration_s.
 #pragma once
+#include <hybrid_bus_twin/CoolingState.h>
 #include <hybrid_bus_twin/EngineState.h>
 
 #include <memory>
@@ -37,6 +40,7 @@ class VehicleParticipant : public cosim::Participant {
   std::unique_ptr<VehicleModel> model_;
   mission::MissionProfile profile_;
   cosim::Input<hybrid_bus_twin::EngineState>* engine_ = nullptr;
+  cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // loops/cooling only
   ros::Publisher state_pub_, command_pub_, cooling_pub_;
   double t_s_ = 0.0, ambient_T_K_ = 298.15;
 };

@@ -1,0 +1,98 @@
+#!/usr/bin/python3
+"""Checks the name:=value arguments of `twin run` before anything starts, and writes them back
+normalised (numbers in plain decimal notation, which roslaunch's substitution args always read
+as numbers: `step:=1e-3` becomes `step:=0.001`).
+
+Usage: launch_args.py REPO SCENARIO name:=value ...   -> one normalised name:=value per line
+Exit 1 with a message naming the argument when one is unknown, mistyped or out of range.
+"""
+import math
+import os
+import sys
+from decimal import Decimal
+
+
+def number(lo, hi, integer=False):
+    def check(v, repo, config=None):
+        try:
+            x = float(v)
+        except ValueError:
+            raise ValueError("'%s' is not a number" % v)
+        if not math.isfinite(x):
+            raise ValueError("'%s' is not finite" % v)
+        if not lo <= x <= hi:
+            raise ValueError("%s is outside [%g, %g]" % (v, lo, hi))
+        if integer and x != int(x):
+            raise ValueError("%s is not an integer" % v)
+        return repr(int(x)) if integer else format(Decimal(repr(x)), "f")
+    return check
+
+
+def choice(*options):
+    def check(v, repo, config=None):
+        if v not in options:
+            raise ValueError("'%s' is not one of %s" % (v, ", ".join(options)))
+        return v
+    return check
+
+
+def existing(kind, folder=None, suffix=""):
+    def check(v, repo, config=None):
+        folder_ = folder.format(config=config or os.path.join(repo, "config")) if folder else None
+        path = os.path.join(repo, folder_, v + suffix) if folder_ else v
+        ok = os.path.isdir(path) if kind == "dir" else os.path.isfile(path)
+        if not ok:
+            avail = ""
+            if folder_ and os.path.isdir(os.path.join(repo, folder_)):
+                avail = "; available: " + ", ".join(sorted(
+                    f[: -len(suffix)] if suffix else f for f in os.listdir(os.path.join(repo, folder_))
+                    if f.endswith(suffix)))
+            raise ValueError("'%s' not found (%s)%s" % (v, path, avail))
+        return os.path.abspath(path) if not folder else v
+    return check
+
+
+ARGS = {
+    "ambient": number(-40.0, 55.0),          # [degC]: the studies use 0, 25, 40
+    "engine": choice("map", "1d"),
+    "solver": choice("fsm", "tvd"),
+    "mode": choice("nodes", "nodelets"),
+    "step": number(1e-4, 1.0),               # [s]
+    "until": number(0.0, 1e6),               # [s], 0 = whole mission
+    "payload": number(0.0, 15000.0),         # [kg]
+    "timeout": number(0.01, 600.0),          # [s wall]
+    "record_period": number(0.0, 3600.0),    # [s]
+    "rviz": choice("true", "false"),
+    "aux": existing("file", "{config}/aux", ".yaml"),
+    "cycle": existing("file", "config/data/cycles/vecto", ".vdri"),
+    "cycle_file": existing("file"),
+    "config": existing("dir"),
+    "architecture": choice("conventional"),
+}
+
+
+def main():
+    repo, scenario, pairs = sys.argv[1], sys.argv[2], sys.argv[3:]
+    out, seen = [], set()
+    config = None
+    for p in pairs:  # the config folder first: the auxiliary sets live in it
+        if p.startswith("config:="):
+            config = os.path.abspath(p[len("config:="):])
+    for p in pairs:
+        name, sep, value = p.partition(":=")
+        if not sep or not name:
+            sys.exit("twin: argument '%s': expected name:=value" % p)
+        if name not in ARGS:
+            sys.exit("twin: unknown argument '%s' for %s; known: %s" % (name, scenario, ", ".join(sorted(ARGS))))
+        if name in seen:
+            sys.exit("twin: argument '%s' given twice" % name)
+        seen.add(name)
+        try:
+            out.append("%s:=%s" % (name, ARGS[name](value, repo, config)))
+        except ValueError as e:
+            sys.exit("twin: argument '%s': %s" % (name, e))
+    print("\n".join(out))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,73 @@
+#!/usr/bin/python3
+"""Launch arguments of `twin run` (scripts/launch_args.py): every class of bad input is rejected
+before anything starts, naming the argument; numbers in scientific notation are normalised to
+the plain decimals roslaunch reads as numbers, never silently replaced by a default."""
+import os
+import subprocess
+import unittest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+TOOL = os.path.join(REPO, "scripts", "launch_args.py")
+
+
+def check(*args):
+    r = subprocess.run(["/usr/bin/python3", TOOL, REPO, "baseline_urban", *args],
+                       capture_output=True, text=True)
+    return r.returncode, r.stdout.split(), r.stderr
+
+
+class LaunchArgs(unittest.TestCase):
+    def rejected(self, arg, *words):
+        rc, _, err = check(arg)
+        self.assertNotEqual(rc, 0, arg)
+        self.assertIn(arg.partition(":=")[0], err)
+        for w in words:
+            self.assertIn(w, err)
+
+    def test_scientific_notation_normalised(self):
+        rc, out, _ = check("step:=1e-3", "until:=1e3", "record_period:=1e-5")
+        self.assertEqual(rc, 0)
+        self.assertEqual(out, ["step:=0.001", "until:=1000.0", "record_period:=0.00001"])
+
+    def test_out_of_range(self):
+        self.rejected("until:=-5", "outside")
+        self.rejected("ambient:=500", "outside")
+        self.rejected("step:=2", "outside")
+        self.rejected("payload:=-1", "outside")
+
+    def test_not_a_number(self):
+        self.rejected("ambient:=warm", "not a number")
+        self.rejected("payload:=nan", "not finite")
+        self.rejected("until:=inf", "not finite")
+
+    def test_unknown_choices(self):
+        self.rejected("mode:=bar", "nodes, nodelets")
+        self.rejected("engine:=foo", "map, 1d")
+        self.rejected("solver:=euler", "fsm, tvd")
+        self.rejected("rviz:=yes", "true, false")
+
+    def test_missing_files(self):
+        self.rejected("aux:=foo", "fan_only", "vecto_p1_example")
+        self.rejected("cycle:=Nowhere", "Urban")
+        self.rejected("cycle_file:=/nonexistent.vdri", "not found")
+        self.rejected("config:=/nonexistent_dir", "not found")
+
+    def test_unknown_and_repeated_arguments(self):
+        self.rejected("speed:=3", "unknown argument")
+        rc, _, err = check("ambient:=0", "ambient:=25")
+        self.assertNotEqual(rc, 0)
+        self.assertIn("twice", err)
+        rc, _, err = check("ambient=25")
+        self.assertNotEqual(rc, 0)
+        self.assertIn("name:=value", err)
+
+    def test_valid_arguments_pass_unchanged(self):
+        args = ["ambient:=0", "engine:=1d", "solver:=tvd", "mode:=nodelets", "aux:=fan_only",
+                "cycle:=Urban", "rviz:=false"]
+        rc, out, _ = check(*args)
+        self.assertEqual(rc, 0)
+        self.assertEqual(out, ["ambient:=0.0"] + args[1:])
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
