@@ -22,6 +22,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ledger  # noqa: E402
+import thermal  # noqa: E402
 
 DIESEL_DENSITY_KG_L = 0.835
 J_PER_KWH = 3.6e6
@@ -146,9 +147,7 @@ def summarise(scenario, args, status, data, stops_csv):
     if fuel is not None:
         s["fuel_by_state_kg"] = fuel
         s["time_by_state_s"] = time
-    exh = data.get("/engine/exhaust")
-    if exh is not None and "nox_mass_kg" in exh and args.get("engine", "map") == "1d":
-        s["nox_engine_out_g"] = exh["nox_mass_kg"][-1] * 1000.0
+    s.update(thermal.thermal_summary(data))
     return s
 
 
@@ -196,6 +195,7 @@ def plots(out, data):
     a1.set_title("Fuel")
     save(fig, "fuel.png")
 
+    thermal.thermal_plots(data, save, plt)
     L = ledger.energy_ledger(data)
     if L is not None:
         ledger.plot_ledger(L, os.path.join(out, "energy_ledger.png"))

@@ -17,6 +17,7 @@ struct EnginePortValues {
   double fuel_mass_flow_kg_s = 0, fuel_mass_kg = 0;             // [kg/s], cumulative [kg]
   double positive_work_J = 0, motoring_work_J = 0;              // cumulative [J]
   double boost_pressure_Pa = 0, turbo_speed_rad_s = 0, lambda = 0, cpu_time_s = 0;
+  double charge_air_T_K = 0;                                    // intake manifold [K]
   double exhaust_mass_flow_kg_s = 0, exhaust_T_K = 0;           // turbine outlet
   double y_O2 = 0, y_CO2 = 0, y_H2O = 0, y_N2 = 0;              // mass fractions [-]
   double nox_mass_flow_kg_s = 0, nox_mass_kg = 0;               // as NO2
@@ -59,6 +60,7 @@ class EnginePorts {
     s.positive_work_j = v.positive_work_J;
     s.motoring_work_j = v.motoring_work_J;
     s.boost_pressure_pa = v.boost_pressure_Pa;
+    s.charge_air_temperature_k = v.charge_air_T_K;
     s.turbo_speed_rad_s = v.turbo_speed_rad_s;
     s.lambda = v.lambda;
     s.cpu_time_s = v.cpu_time_s;

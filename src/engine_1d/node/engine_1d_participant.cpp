@@ -59,6 +59,7 @@ void Engine1DParticipant::publishOutputs(const ros::Time& t) {
   v.positive_work_J = o.positive_work_J;
   v.motoring_work_J = o.motoring_work_J;
   v.boost_pressure_Pa = o.boost_pressure_Pa;
+  v.charge_air_T_K = o.intake_manifold_T_K;
   v.turbo_speed_rad_s = o.turbo_speed_rad_s;
   v.lambda = o.lambda;
   v.cpu_time_s = o.cpu_time_s;

@@ -60,6 +60,7 @@ void EngineMapParticipant::publishOutputs(const ros::Time& t) {
   v.positive_work_J = o.positive_work_J;
   v.motoring_work_J = o.motoring_work_J;
   v.boost_pressure_Pa = o.gas.boost_pressure_Pa;
+  v.charge_air_T_K = o.gas.intake_manifold_T_K;
   v.turbo_speed_rad_s = 0.0;  // no turbocharger in the map model
   v.lambda = o.gas.lambda;
   v.exhaust_mass_flow_kg_s = o.gas.exhaust_mass_flow_kg_s;

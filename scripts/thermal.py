@@ -1,0 +1,95 @@
+"""Thermal and emission results of a run (cooling and aftertreatment nodes), from the bag data of
+postprocess.read_bag: summary keys and plots. Every key is left out when the node that owns it
+did not run (a figure that means nothing for the run is not printed).
+
+Summary keys: fan_kwh (crank-side fan drive energy, signed), pump_kwh (HT pump shaft energy),
+warmup_s (first time the HT coolant reached the thermostat's opening start), ats_lightoff_s (first
+SCR light-off), nox_engine_out_g, nox_tailpipe_g, nox_conversion_pct, nh3_slip_g, adblue_kg,
+mean_charge_air_c (time mean of the intake-manifold temperature), mean_back_pressure_kpa
+(time mean of the over-pressure at the turbine outlet), cooling_balance_closure and
+ats_balance_closure (|energy residual| / heat or enthalpy in).
+"""
+import numpy as np
+
+J_PER_KWH = 3.6e6
+
+
+def _time_mean(d, field):
+    t, x = d["t"], d[field]
+    if len(t) < 2:
+        return float(x[-1])
+    return float(np.trapz(x, t) / (t[-1] - t[0]))
+
+
+def thermal_summary(data):
+    s = {}
+    cool, ats = data.get("/cooling/state"), data.get("/aftertreatment/state")
+    eng, exh = data.get("/engine/state"), data.get("/engine/exhaust")
+    if cool is not None:
+        s["fan_kwh"] = float(cool["fan_drive_energy_j"][-1]) / J_PER_KWH
+        s["pump_kwh"] = float(cool["pump_energy_j"][-1]) / J_PER_KWH
+        w = float(cool["warmup_time_s"][-1])
+        if w >= 0.0:
+            s["warmup_s"] = w
+        heat_in = float(cool["engine_heat_j"][-1] + cool["lt_heat_j"][-1])
+        if heat_in > 0:
+            s["cooling_balance_closure"] = abs(float(cool["energy_residual_j"][-1])) / heat_in
+    if exh is not None:
+        s["nox_engine_out_g"] = float(exh["nox_mass_kg"][-1]) * 1000.0
+    if ats is not None:
+        lo = float(ats["light_off_time_s"][-1])
+        if lo >= 0.0:
+            s["ats_lightoff_s"] = lo
+        s["nox_tailpipe_g"] = float(ats["tailpipe_nox_mass_kg"][-1]) * 1000.0
+        nin = float(ats["engine_nox_mass_kg"][-1])
+        if nin > 0:
+            s["nox_conversion_pct"] = 100.0 * (1.0 - float(ats["tailpipe_nox_mass_kg"][-1]) / nin)
+        s["nh3_slip_g"] = float(ats["nh3_slip_mass_kg"][-1]) * 1000.0
+        s["adblue_kg"] = float(ats["urea_mass_kg"][-1])
+        h_in = float(ats["enthalpy_in_j"][-1])
+        if h_in > 0:
+            s["ats_balance_closure"] = abs(float(ats["energy_residual_j"][-1])) / h_in
+        amb = data.get("/vehicle/engine_command")
+        p_amb = float(amb["ambient_pressure_pa"][-1]) if amb is not None else 101325.0
+        s["mean_back_pressure_kpa"] = (_time_mean(ats, "back_pressure_pa") - p_amb) / 1000.0
+    if eng is not None and "charge_air_temperature_k" in eng and float(eng["charge_air_temperature_k"][-1]) > 0:
+        s["mean_charge_air_c"] = _time_mean(eng, "charge_air_temperature_k") - 273.15
+    return s
+
+
+def thermal_plots(data, save, plt):
+    """Adds thermal.png, fan.png, nox.png (each only when its node ran); `save(fig, name)`."""
+    cool, ats = data.get("/cooling/state"), data.get("/aftertreatment/state")
+    exh = data.get("/engine/exhaust")
+    if cool is not None or ats is not None:
+        fig, ax = plt.subplots(figsize=(12, 4.5))
+        if cool is not None:
+            ax.plot(cool["t"], cool["coolant_ht_temperature_k"] - 273.15, lw=0.9, label="HT coolant")
+            ax.plot(cool["t"], cool["metal_temperature_k"] - 273.15, lw=0.9, label="engine metal")
+        if ats is not None:
+            for f, lab in (("doc_temperature_k", "DOC"), ("dpf_temperature_k", "DPF"),
+                           ("scr_temperature_k", "SCR"), ("asc_temperature_k", "ASC")):
+                ax.plot(ats["t"], ats[f] - 273.15, lw=0.8, label=lab + " brick")
+        ax.set(xlabel="time [s]", ylabel="temperature [°C]", title="Coolant and aftertreatment temperatures")
+        ax.legend(ncol=3, fontsize=8)
+        save(fig, "thermal.png")
+    if cool is not None:
+        fig, (a1, a2) = plt.subplots(2, 1, figsize=(12, 5.5), sharex=True)
+        a1.plot(cool["t"], cool["fan_speed_rad_s"] * 60 / (2 * np.pi), lw=0.7)
+        a1.set(ylabel="fan speed [rpm]", title="Cooling fan (viscous clutch)")
+        a2.plot(cool["t"], cool["fan_drive_power_w"] / 1000.0, lw=0.7)
+        a2.axhline(0.0, color="0.5", lw=0.5)
+        a2.set(xlabel="time [s]", ylabel="fan drive power [kW] (<0 windmilling)")
+        save(fig, "fan.png")
+    if exh is not None:
+        fig, (a1, a2) = plt.subplots(2, 1, figsize=(12, 5.5), sharex=True)
+        a1.plot(exh["t"], exh["nox_mass_kg"] * 1000.0, lw=0.9, label="engine-out")
+        if ats is not None:
+            a1.plot(ats["t"], ats["tailpipe_nox_mass_kg"] * 1000.0, lw=0.9, label="tailpipe")
+        a1.set(ylabel="cumulative NOx [g]", title="NOx and exhaust back-pressure")
+        a1.legend()
+        if ats is not None:
+            a2.plot(ats["t"], (ats["back_pressure_pa"] - 101325.0) / 1000.0, lw=0.6)
+            a2.set(ylabel="turbine-outlet over-pressure [kPa]")
+        a2.set(xlabel="time [s]")
+        save(fig, "nox.png")
