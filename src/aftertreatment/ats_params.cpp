@@ -93,6 +93,7 @@ void AtsParams::declare(ParamSet& ps) {
   ps.add("contraction_k", contraction_k, "-", 0.0, 2.0, "channel inlet loss coefficient");
   ps.add("muffler_k", muffler_k, "-", 0.0, 50.0, "muffler + tailpipe loss coefficient (pipe head)");
   ps.add("pipe_diameter_m", pipe_diameter_m, "m", 0.03, 0.3, "exhaust pipe diameter");
+  ps.add("ambient_pressure_Pa", ambient_pressure_Pa, "Pa", 5e4, 1.2e5, "tailpipe (ambient) pressure");
 
   ps.setPrefix("lightoff/");
   ps.add("filter_s", lightoff_filter_s, "s", 0.0, 100.0, "low-pass of the NOx flows");
@@ -102,7 +103,8 @@ void AtsParams::declare(ParamSet& ps) {
   ps.setPrefix("numerics/");
   ps.add("rtol", rtol, "-", 1e-12, 1e-3, "CVODE relative tolerance");
   ps.add("atol_theta", atol_theta, "-", 1e-15, 1e-4, "CVODE absolute tolerance on coverage");
-  ps.add("max_steps", max_steps, "-", 10, 1000000, "CVODE steps per macro step");
+  ps.add("max_steps", max_steps, "-", 10, 1000000, "CVODE steps per model step");
+  ps.add("model_step_s", model_step_s, "s", 1e-4, 1.0, "model step of the node (inputs averaged)");
   ps.setPrefix("");
 }
 
