@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "aftertreatment/aftertreatment.hpp"
 #include "aftertreatment/brick.hpp"
@@ -59,6 +60,7 @@ TEST(Brick, InletSliceFollowsExactExponential) {
     max_err = std::max(max_err, std::abs(b.T(0) - ref));
   }
   EXPECT_LT(max_err, 1e-6);
+  std::printf("[ats] DOC inlet slice: tau %.3f s, max |T - exact| %.3g K over 30 s\n", tau, max_err);
   // the downstream slices lag behind the inlet slice
   EXPECT_LT(b.T(N - 1), b.T(0));
 }
@@ -91,6 +93,8 @@ TEST(Brick, LumpedLimitTimeConstant) {
   }
   EXPECT_GT(t, 3.0 * tau);  // the transient is covered
   EXPECT_LT(max_rel, 0.01);
+  std::printf("[ats] lumped limit: NTU %.3f, tau %.1f s, max deviation from exp %.3g of the step\n",
+              NTU, tau, max_rel);
   // energy of the step sequence: gas heat = stored (no can loss, no reaction)
   EXPECT_NEAR(e.gas_to_wall_J, e.stored_J, 1e-9 * e.stored_J);
   EXPECT_NEAR(e.stored_J, g.C * (b.meanT() - T0), 1e-6 * e.stored_J);

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "aftertreatment/aftertreatment.hpp"
@@ -69,6 +70,9 @@ TEST(ScrStorage, Nh3MassBalance) {
   EXPECT_GT(ox, 0.0);
   EXPECT_GT(slip, 0.0);
   EXPECT_NEAR(dosed, stored + reacted + ox + slip, 1e-6 * dosed);
+  std::printf("[ats] SCR alone: dosed %.5g mol = stored %.4g + reacted %.5g + oxidised %.4g + slip "
+              "%.4g, residual %.3g relative\n", dosed, stored, reacted, ox, slip,
+              (dosed - stored - reacted - ox - slip) / dosed);
 }
 
 // The equilibrium storage (Temkin) falls with temperature and rises with the gas NH3 level.
@@ -111,6 +115,8 @@ TEST(ScrStorage, ConversionRisesWithTemperature) {
     const double nox = in.n_NO_mol_s + in.n_NO2_mol_s;
     X.push_back(1.0 - (r.n_NO_out_mol_s + r.n_NO2_out_mol_s) / nox);
   }
+  std::printf("[ats] SCR steady conversion at ANR 1, 10 %% NO2: 400 K %.3f, 450 K %.3f, 500 K %.3f, "
+              "550 K %.3f, 600 K %.3f\n", X[0], X[1], X[2], X[3], X[4]);
   for (std::size_t i = 1; i < X.size(); ++i) EXPECT_GT(X[i], X[i - 1]) << i;
   EXPECT_LT(X.front(), 0.25);  // 127 degC
   EXPECT_GT(X.back(), 0.9);    // 327 degC

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -41,6 +42,10 @@ TEST(Aftertreatment, EnergyAndNitrogenBalancesOverATransient) {
   EXPECT_GT(e.can_loss_J, 0.005 * e.enthalpy_in_J);
   EXPECT_GT(e.stored_change_J, 0.005 * e.enthalpy_in_J);
   EXPECT_LT(std::abs(e.residual_J()), 0.01 * e.enthalpy_in_J);
+  std::printf("[ats] 30 min transient: H_in %.4g J, H_out %.4g J, can %.4g J, reaction %.4g J, "
+              "stored %.4g J, residual %.3g J (%.2g of H_in)\n", e.enthalpy_in_J, e.enthalpy_out_J,
+              e.can_loss_J, e.reaction_heat_J, e.stored_change_J, e.residual_J(),
+              e.residual_J() / e.enthalpy_in_J);
   // independent stored-energy check from the brick temperatures
   double dE = 0.0;
   for (int b = 0; b < kNumBricks; ++b)
@@ -50,6 +55,12 @@ TEST(Aftertreatment, EnergyAndNitrogenBalancesOverATransient) {
   const AtsNitrogen& n = ats.nitrogen();
   EXPECT_GT(n.nh3_dosed_mol, 0.0);
   EXPECT_NEAR(n.residual_mol(), 0.0, 1e-6 * n.nh3_dosed_mol);
+  std::printf("[ats] NH3: dosed %.5g mol, stored %.4g, reacted %.5g, oxidised %.4g, SCR slip %.4g, "
+              "residual %.3g mol (%.2g relative); NOx engine %.4g g, tailpipe %.4g g\n",
+              n.nh3_dosed_mol, n.nh3_stored_change_mol, n.nh3_scr_reacted_mol,
+              n.nh3_scr_oxidised_mol, n.nh3_scr_slip_mol, n.residual_mol(),
+              n.residual_mol() / n.nh3_dosed_mol, 1e3 * ats.outputs().engine_nox_kg,
+              1e3 * ats.outputs().tailpipe_nox_kg);
   EXPECT_NEAR(n.nh3_scr_slip_mol, n.nh3_asc_oxidised_mol + n.nh3_tailpipe_mol, 1e-9 + 1e-9 * n.nh3_scr_slip_mol);
   // the warm system converts most NOx in the second half hour
   EXPECT_LT(ats.outputs().tailpipe_nox_kg, ats.outputs().engine_nox_kg);
@@ -100,6 +111,8 @@ TEST(Aftertreatment, LightOffFromTheThermalModel) {
       if (ats.outputs().light_off && scr_T_at_lo == 0.0) scr_T_at_lo = ats.outputs().brick_T_K[kSCR];
     }
     t_lo[c] = ats.outputs().light_off_time_s;
+    std::printf("[ats] start at %.0f K: SCR light-off at %.1f s (SCR mean wall %.1f K), conversion "
+                "after 20 min %.3f\n", Tamb[c], t_lo[c], scr_T_at_lo, ats.outputs().nox_conversion);
     ASSERT_GT(t_lo[c], 30.0);
     EXPECT_GE(scr_T_at_lo, p.dosing_release_T_K);
     EXPECT_GT(ats.outputs().nox_conversion, 0.8);
@@ -149,6 +162,10 @@ TEST(Aftertreatment, BackPressureAtRatedFlow) {
   ats.step(0.1, in);
   ats.step(0.1, in);
   const double dp = ats.outputs().back_pressure_Pa - in.ambient_p_Pa;
+  const auto& o = ats.outputs();
+  std::printf("[ats] 0.30 kg/s at 700 K: back-pressure +%.0f Pa (DOC %.0f, DPF %.0f, SCR %.0f, "
+              "ASC %.0f, muffler %.0f)\n", dp, o.brick_dp_Pa[kDOC], o.brick_dp_Pa[kDPF],
+              o.brick_dp_Pa[kSCR], o.brick_dp_Pa[kASC], o.muffler_dp_Pa);
   EXPECT_GT(dp, 10e3);
   EXPECT_LT(dp, 40e3);
   double sum = ats.outputs().muffler_dp_Pa;
