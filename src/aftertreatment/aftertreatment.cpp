@@ -25,23 +25,7 @@ void checkInput(double v, const char* what, bool positive) {
 }
 }  // namespace
 
-Aftertreatment::Aftertreatment(const AtsParams& p) : p_(p) {
-  HeatTransferParams h;
-  h.nusselt = p.nusselt;
-  h.insulation_thickness_m = p.insulation_thickness_m;
-  h.insulation_k_W_mK = p.insulation_k_W_mK;
-  h.h_natural_W_m2K = p.h_natural_W_m2K;
-  h.can_emissivity = p.can_emissivity;
-  h.underbody_air_factor = p.underbody_air_factor;
-  h.can_length_factor = p.can_length_factor;
-  bricks_[kDOC] = std::make_unique<Brick>("DOC", p.doc, h, false);
-  bricks_[kDPF] = std::make_unique<Brick>("DPF", p.dpf, h, true);
-  bricks_[kSCR] = std::make_unique<Brick>("SCR", p.scr, h, false);
-  bricks_[kASC] = std::make_unique<Brick>("ASC", p.asc, h, false);
-  dpf_.soot_load_g_L = p.dpf_soot_load_g_L;
-  dpf_.wall_permeability_m2 = p.dpf_wall_permeability_m2;
-  dpf_.soot_permeability_m2 = p.dpf_soot_permeability_m2;
-  dpf_.soot_cake_density_kg_m3 = p.dpf_soot_cake_density_kg_m3;
+ScrKinetics scrKinetics(const AtsParams& p) {
   ScrKinetics k;
   k.omega_mol_m3 = p.scr_site_density_mol_m3;
   k.k_ads = p.scr_k_ads_m3_mol_s;
@@ -58,8 +42,33 @@ Aftertreatment::Aftertreatment(const AtsParams& p) : p_(p) {
   k.E_ox = p.scr_E_ox_J_mol;
   k.T_ref = p.scr_T_ref_K;
   k.T_ox_ref = p.scr_T_ox_ref_K;
-  scr_ = std::make_unique<ScrStorage>(k, p.scr.slices, bricks_[kSCR]->sliceVolume(), p.rtol,
-                                      p.atol_theta, p.max_steps);
+  return k;
+}
+
+HeatTransferParams heatTransfer(const AtsParams& p) {
+  HeatTransferParams h;
+  h.nusselt = p.nusselt;
+  h.insulation_thickness_m = p.insulation_thickness_m;
+  h.insulation_k_W_mK = p.insulation_k_W_mK;
+  h.h_natural_W_m2K = p.h_natural_W_m2K;
+  h.can_emissivity = p.can_emissivity;
+  h.underbody_air_factor = p.underbody_air_factor;
+  h.can_length_factor = p.can_length_factor;
+  return h;
+}
+
+Aftertreatment::Aftertreatment(const AtsParams& p) : p_(p) {
+  const HeatTransferParams h = heatTransfer(p);
+  bricks_[kDOC] = std::make_unique<Brick>("DOC", p.doc, h, false);
+  bricks_[kDPF] = std::make_unique<Brick>("DPF", p.dpf, h, true);
+  bricks_[kSCR] = std::make_unique<Brick>("SCR", p.scr, h, false);
+  bricks_[kASC] = std::make_unique<Brick>("ASC", p.asc, h, false);
+  dpf_.soot_load_g_L = p.dpf_soot_load_g_L;
+  dpf_.wall_permeability_m2 = p.dpf_wall_permeability_m2;
+  dpf_.soot_permeability_m2 = p.dpf_soot_permeability_m2;
+  dpf_.soot_cake_density_kg_m3 = p.dpf_soot_cake_density_kg_m3;
+  scr_ = std::make_unique<ScrStorage>(scrKinetics(p), p.scr.slices, bricks_[kSCR]->sliceVolume(),
+                                      p.rtol, p.atol_theta, p.max_steps);
   int nmax = 0;
   for (const auto& b : bricks_) nmax = std::max(nmax, b->slices());
   qr_.assign(nmax, 0.0);

@@ -117,6 +117,10 @@ struct AtsOutputs {
   double light_off_time_s = -1.0;         ///< -1 until light-off
 };
 
+/// The SCR kinetics and brick heat-transfer parameters of an AtsParams.
+ScrKinetics scrKinetics(const AtsParams& p);
+HeatTransferParams heatTransfer(const AtsParams& p);
+
 class Aftertreatment {
  public:
   explicit Aftertreatment(const AtsParams& p);

@@ -12,25 +12,7 @@
 namespace hbt::aftertreatment {
 namespace {
 
-ScrKinetics kinetics(const AtsParams& p) {
-  ScrKinetics k;
-  k.omega_mol_m3 = p.scr_site_density_mol_m3;
-  k.k_ads = p.scr_k_ads_m3_mol_s;
-  k.k_des = p.scr_k_des_1_s;
-  k.E_des = p.scr_E_des_J_mol;
-  k.alpha = p.scr_temkin_alpha;
-  k.k_std_ref = p.scr_k_std_ref_m3_mol_s;
-  k.E_std = p.scr_E_std_J_mol;
-  k.k_fast_ref = p.scr_k_fast_ref_m6_mol2_s;
-  k.E_fast = p.scr_E_fast_J_mol;
-  k.k_no2_ref = p.scr_k_no2_ref_m3_mol_s;
-  k.E_no2 = p.scr_E_no2_J_mol;
-  k.k_ox_ref = p.scr_k_ox_ref_1_s;
-  k.E_ox = p.scr_E_ox_J_mol;
-  k.T_ref = p.scr_T_ref_K;
-  k.T_ox_ref = p.scr_T_ox_ref_K;
-  return k;
-}
+ScrKinetics kinetics(const AtsParams& p) { return scrKinetics(p); }
 
 constexpr double kVs = 0.0171 / 10;  // slice volume of the 17.1 L SCR, 10 slices
 
