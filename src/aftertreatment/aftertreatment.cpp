@@ -1,0 +1,308 @@
+#include "aftertreatment/aftertreatment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/errors.hpp"
+
+namespace hbt::aftertreatment {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDH_CO = 283.0e3;     // J/mol CO -> CO2
+constexpr double kDH_NO2 = 57.1e3;     // J/mol NO + 1/2 O2 -> NO2
+constexpr double kDS_NO2 = -73.2;      // J/(mol K)
+constexpr double kDH_NH3ox = 316.8e3;  // J/mol NH3 -> N2 + H2O
+
+double arrhenius(double k_ref, double E, double T_ref, double T) {
+  return k_ref * std::exp(-E / kRu * (1.0 / T - 1.0 / T_ref));
+}
+
+void checkInput(double v, const char* what, bool positive) {
+  if (!std::isfinite(v) || (positive ? v <= 0.0 : v < 0.0))
+    throw ModelDivergence("aftertreatment input", what, "non-physical value " + std::to_string(v));
+}
+}  // namespace
+
+ScrKinetics scrKinetics(const AtsParams& p) {
+  ScrKinetics k;
+  k.omega_mol_m3 = p.scr_site_density_mol_m3;
+  k.k_ads = p.scr_k_ads_m3_mol_s;
+  k.k_des = p.scr_k_des_1_s;
+  k.E_des = p.scr_E_des_J_mol;
+  k.alpha = p.scr_temkin_alpha;
+  k.k_std_ref = p.scr_k_std_ref_m3_mol_s;
+  k.E_std = p.scr_E_std_J_mol;
+  k.k_fast_ref = p.scr_k_fast_ref_m6_mol2_s;
+  k.E_fast = p.scr_E_fast_J_mol;
+  k.k_no2_ref = p.scr_k_no2_ref_m3_mol_s;
+  k.E_no2 = p.scr_E_no2_J_mol;
+  k.k_ox_ref = p.scr_k_ox_ref_1_s;
+  k.E_ox = p.scr_E_ox_J_mol;
+  k.T_ref = p.scr_T_ref_K;
+  k.T_ox_ref = p.scr_T_ox_ref_K;
+  return k;
+}
+
+HeatTransferParams heatTransfer(const AtsParams& p) {
+  HeatTransferParams h;
+  h.nusselt = p.nusselt;
+  h.insulation_thickness_m = p.insulation_thickness_m;
+  h.insulation_k_W_mK = p.insulation_k_W_mK;
+  h.h_natural_W_m2K = p.h_natural_W_m2K;
+  h.can_emissivity = p.can_emissivity;
+  h.underbody_air_factor = p.underbody_air_factor;
+  h.can_length_factor = p.can_length_factor;
+  return h;
+}
+
+Aftertreatment::Aftertreatment(const AtsParams& p) : p_(p) {
+  const HeatTransferParams h = heatTransfer(p);
+  bricks_[kDOC] = std::make_unique<Brick>("DOC", p.doc, h, false);
+  bricks_[kDPF] = std::make_unique<Brick>("DPF", p.dpf, h, true);
+  bricks_[kSCR] = std::make_unique<Brick>("SCR", p.scr, h, false);
+  bricks_[kASC] = std::make_unique<Brick>("ASC", p.asc, h, false);
+  dpf_.soot_load_g_L = p.dpf_soot_load_g_L;
+  dpf_.wall_permeability_m2 = p.dpf_wall_permeability_m2;
+  dpf_.soot_permeability_m2 = p.dpf_soot_permeability_m2;
+  dpf_.soot_cake_density_kg_m3 = p.dpf_soot_cake_density_kg_m3;
+  scr_ = std::make_unique<ScrStorage>(scrKinetics(p), p.scr.slices, bricks_[kSCR]->sliceVolume(),
+                                      p.rtol, p.atol_theta, p.max_steps);
+  int nmax = 0;
+  for (const auto& b : bricks_) nmax = std::max(nmax, b->slices());
+  qr_.assign(nmax, 0.0);
+  heat_J_.assign(nmax, 0.0);
+  T_scr_.assign(nmax, 0.0);
+  reset(298.15);
+}
+
+double Aftertreatment::energyStored() const {
+  double e = 0.0;
+  for (const auto& b : bricks_)
+    for (int i = 0; i < b->slices(); ++i) e += b->sliceHeatCapacity() * b->T(i);
+  return e;
+}
+
+void Aftertreatment::reset(double T_K, double ambient_p_Pa) {
+  for (auto& b : bricks_) b->setUniformTemperature(T_K);
+  scr_->setCoverage(p_.scr_initial_coverage);
+  p_brick_.fill(ambient_p_Pa);
+  out_ = AtsOutputs{};
+  energy_ = AtsEnergy{};
+  n_ = AtsNitrogen{};
+  t_ = 0.0;
+  F_in_ = F_out_ = 0.0;
+  E0_ = energyStored();
+  stored0_ = scr_->storedMol();
+  T_amb_last_ = T_K;
+  for (int b = 0; b < kNumBricks; ++b) {
+    out_.brick_T_K[b] = T_K;
+    out_.brick_out_T_K[b] = T_K;
+  }
+  out_.outlet_T_K = T_K;
+  out_.back_pressure_Pa = ambient_p_Pa;
+  out_.nh3_stored_mol = stored0_;
+}
+
+double Aftertreatment::storageTarget_mol() const {
+  const Brick& s = *bricks_[kSCR];
+  const double p = p_brick_[kSCR];
+  double sum = 0.0;
+  for (int i = 0; i < s.slices(); ++i) {
+    const double c = p_.dosing_ref_nh3_ppm * 1e-6 * p / (kRu * s.T(i));
+    sum += scr_->equilibriumCoverage(s.T(i), c);
+  }
+  return sum * p_.scr_site_density_mol_m3 * s.sliceVolume();
+}
+
+PressureDrop Aftertreatment::brickPressureDrop(int b, double mdot, double T, double p,
+                                               const GasComposition& g) const {
+  const double rho = p * molarMass(g) / (kRu * T);
+  return bricks_[b]->pressureDrop(mdot / rho, T, rho, b == kDPF ? &dpf_ : nullptr,
+                                  p_.contraction_k);
+}
+
+void Aftertreatment::step(double dt, const AtsInputs& in) {
+  checkInput(dt, "time step", true);
+  checkInput(in.exhaust_mass_flow_kg_s, "exhaust mass flow", false);
+  checkInput(in.exhaust_T_K, "exhaust temperature", true);
+  checkInput(in.nox_mass_flow_kg_s, "NOx mass flow", false);
+  checkInput(in.hc_mass_flow_kg_s, "HC mass flow", false);
+  checkInput(in.co_mass_flow_kg_s, "CO mass flow", false);
+  checkInput(in.ambient_T_K, "ambient temperature", true);
+  checkInput(in.ambient_p_Pa, "ambient pressure", true);
+  checkInput(in.vehicle_speed_m_s, "vehicle speed", false);
+  checkInput(in.comp.y_O2 + in.comp.y_CO2 + in.comp.y_H2O, "composition", false);
+
+  const double mdot = in.exhaust_mass_flow_kg_s;
+  const double cp = cpMix(in.comp, in.exhaust_T_K);
+  const double M = molarMass(in.comp);
+  const double R = kRu / M;
+  const double n_tot = mdot / M;
+  const double mcp = mdot * cp;
+  const double Tamb = in.ambient_T_K, v = in.vehicle_speed_m_s;
+  const double x_O2 = in.comp.y_O2 * M / 0.031999;
+
+  // ---------------- DOC ----------------
+  Brick& doc = *bricks_[kDOC];
+  const double n_NOx = in.nox_mass_flow_kg_s / kM_NO2;
+  double n_NO2 = p_.engine_no2_fraction * n_NOx;
+  double n_CO = in.co_mass_flow_kg_s / kM_CO, m_HC = in.hc_mass_flow_kg_s;
+  const double n_CO_in = n_CO;
+  {
+    const double p = p_brick_[kDOC];
+    const double sqrt_pO2 = std::sqrt(std::max(0.0, x_O2 * p / kAtm_Pa));
+    for (int i = 0; i < doc.slices(); ++i) {
+      const double T = doc.T(i);
+      qr_[i] = 0.0;
+      if (n_tot <= 0.0) continue;
+      const double tau = doc.sliceVolume() / (n_tot * kRu * T / p);
+      const double X_co = -std::expm1(-arrhenius(p_.doc_co_k_ref_1_s, p_.doc_co_E_J_mol, p_.doc_co_T_ref_K, T) * tau);
+      const double X_hc = -std::expm1(-arrhenius(p_.doc_hc_k_ref_1_s, p_.doc_hc_E_J_mol, p_.doc_hc_T_ref_K, T) * tau);
+      double dNO2 = 0.0;
+      if (n_NOx > 0.0 && sqrt_pO2 > 0.0) {
+        const double K = std::exp(-(-kDH_NO2 - T * kDS_NO2) / (kRu * T));
+        const double f_eq = K * sqrt_pO2 / (1.0 + K * sqrt_pO2);
+        const double kf = arrhenius(p_.doc_no_k_ref_1_s, p_.doc_no_E_J_mol, p_.doc_no_T_ref_K, T);
+        const double kr = kf / (K * sqrt_pO2);
+        const double f = n_NO2 / n_NOx;
+        const double f1 = f_eq + (f - f_eq) * std::exp(-(kf + kr) * tau);
+        dNO2 = (f1 - f) * n_NOx;
+        n_NO2 += dNO2;
+      }
+      qr_[i] = kDH_CO * n_CO * X_co + p_.hc_heating_value_J_kg * m_HC * X_hc + kDH_NO2 * dNO2;
+      n_CO *= 1.0 - X_co;
+      m_HC *= 1.0 - X_hc;
+    }
+  }
+  out_.doc_no2_fraction = n_NOx > 0.0 ? n_NO2 / n_NOx : 0.0;
+  out_.doc_co_conversion = n_CO_in > 0.0 ? 1.0 - n_CO / n_CO_in : 0.0;
+  BrickEnergy e[kNumBricks];
+  double Tg_in[kNumBricks], Tg_out[kNumBricks];
+  Tg_in[kDOC] = in.exhaust_T_K;
+  Tg_out[kDOC] = doc.stepThermal(dt, mdot, cp, Tg_in[kDOC], qr_.data(), Tamb, v, e[kDOC]);
+
+  // ---------------- DPF ----------------
+  Tg_in[kDPF] = Tg_out[kDOC];
+  Tg_out[kDPF] = bricks_[kDPF]->stepThermal(dt, mdot, cp, Tg_in[kDPF], nullptr, Tamb, v, e[kDPF]);
+
+  // ---------------- dosing ----------------
+  Brick& scr = *bricks_[kSCR];
+  double n_NH3 = 0.0, adblue = 0.0, Q_adblue = 0.0;
+  double T_scr_in = Tg_out[kDPF];
+  out_.anr = 0.0;
+  if (T_scr_in >= p_.dosing_release_T_K && n_NOx > 0.0 && mcp > 0.0) {
+    const double target = storageTarget_mol();
+    const double phi = target > 0.0 ? scr_->storedMol() / target : 1e9;
+    const double s = std::clamp((p_.dosing_fill_stop - phi) / (p_.dosing_fill_stop - p_.dosing_fill_start), 0.0, 1.0);
+    out_.anr = p_.dosing_anr * s;
+    n_NH3 = out_.anr * n_NOx;
+    adblue = 0.5 * n_NH3 * kM_urea / p_.adblue_urea_mass_fraction;
+    Q_adblue = adblue * p_.adblue_heat_J_kg;
+    // never cool the gas below ambient by evaporation (tiny flows)
+    Q_adblue = std::min(Q_adblue, std::max(0.0, mcp * (T_scr_in - Tamb)));
+    T_scr_in -= Q_adblue / mcp;
+  }
+
+  // ---------------- SCR ----------------
+  ScrInlet si;
+  si.n_NO_mol_s = n_NOx - n_NO2;
+  si.n_NO2_mol_s = n_NO2;
+  si.n_NH3_mol_s = n_NH3;
+  si.n_total_mol_s = n_tot;
+  si.p_Pa = p_brick_[kSCR];
+  for (int i = 0; i < scr.slices(); ++i) T_scr_[i] = scr.T(i);
+  const ScrStepResult r = scr_->step(dt, si, T_scr_.data(), heat_J_.data());
+  for (int i = 0; i < scr.slices(); ++i) qr_[i] = heat_J_[i] / dt;
+  Tg_in[kSCR] = T_scr_in;
+  Tg_out[kSCR] = scr.stepThermal(dt, mdot, cp, T_scr_in, qr_.data(), Tamb, v, e[kSCR]);
+  const double nox_in_mol = n_NOx * dt;
+  const double nox_out_mol = std::max(0.0, nox_in_mol - r.std_mol - 2.0 * r.fast_mol - r.no2_mol);
+
+  // ---------------- ASC ----------------
+  Brick& asc = *bricks_[kASC];
+  double n_slip = r.nh3_slip_mol / dt;
+  const double n_slip_in = n_slip;
+  for (int i = 0; i < asc.slices(); ++i) {
+    qr_[i] = 0.0;
+    if (n_tot <= 0.0 || n_slip <= 0.0) continue;
+    const double T = asc.T(i);
+    const double tau = asc.sliceVolume() / (n_tot * kRu * T / p_brick_[kASC]);
+    const double X = -std::expm1(-arrhenius(p_.asc_k_ref_1_s, p_.asc_E_J_mol, p_.asc_T_ref_K, T) * tau);
+    qr_[i] = kDH_NH3ox * n_slip * X;
+    n_slip *= 1.0 - X;
+  }
+  Tg_in[kASC] = Tg_out[kSCR];
+  Tg_out[kASC] = asc.stepThermal(dt, mdot, cp, Tg_in[kASC], qr_.data(), Tamb, v, e[kASC]);
+
+  // ---------------- pressure ----------------
+  double p = in.ambient_p_Pa;
+  {
+    const double T = Tg_out[kASC];
+    const double rho = p / (R * T);
+    const double A = 0.25 * kPi * p_.pipe_diameter_m * p_.pipe_diameter_m;
+    const double u = mdot / (rho * A);
+    out_.muffler_dp_Pa = p_.muffler_k * 0.5 * rho * u * u;
+    p += out_.muffler_dp_Pa;
+  }
+  for (int b = kASC; b >= kDOC; --b) {
+    const double T = 0.5 * (Tg_in[b] + Tg_out[b]);
+    const double rho = p / (R * T);
+    const PressureDrop dp = bricks_[b]->pressureDrop(mdot / rho, T, rho, b == kDPF ? &dpf_ : nullptr,
+                                                     p_.contraction_k);
+    out_.brick_dp_Pa[b] = dp.total();
+    p_brick_[b] = p + 0.5 * dp.total();
+    p += dp.total();
+  }
+  if (!std::isfinite(p))
+    throw ModelDivergence("aftertreatment", "back-pressure", "non-physical value");
+  out_.back_pressure_Pa = p;
+
+  // ---------------- balances and outputs ----------------
+  for (int b = 0; b < kNumBricks; ++b) {
+    energy_.can_loss_J += e[b].can_loss_J;
+    energy_.reaction_heat_J += e[b].reaction_J;
+    out_.brick_T_K[b] = bricks_[b]->meanT();
+    out_.brick_out_T_K[b] = Tg_out[b];
+  }
+  energy_.reaction_heat_J -= Q_adblue * dt;
+  energy_.enthalpy_in_J += mcp * (in.exhaust_T_K - kT_ref_K) * dt;
+  energy_.enthalpy_out_J += mcp * (Tg_out[kASC] - kT_ref_K) * dt;
+  energy_.stored_change_J = energyStored() - E0_;
+
+  n_.nh3_dosed_mol += n_NH3 * dt;
+  n_.nh3_scr_reacted_mol += r.std_mol + 2.0 * r.fast_mol + (4.0 / 3.0) * r.no2_mol;
+  n_.nh3_scr_oxidised_mol += r.ox_mol;
+  n_.nh3_scr_slip_mol += r.nh3_slip_mol;
+  n_.nh3_asc_oxidised_mol += (n_slip_in - n_slip) * dt;
+  n_.nh3_tailpipe_mol += n_slip * dt;
+  n_.nox_scr_in_mol += nox_in_mol;
+  n_.nox_scr_out_mol += nox_out_mol;
+  n_.nh3_stored_change_mol = scr_->storedMol() - stored0_;
+
+  out_.outlet_T_K = Tg_out[kASC];
+  out_.tailpipe_nox_kg_s = nox_out_mol / dt * kM_NO2;
+  out_.tailpipe_nox_kg += nox_out_mol * kM_NO2;
+  out_.engine_nox_kg += nox_in_mol * kM_NO2;
+  out_.nh3_slip_kg_s = n_slip * kM_NH3;
+  out_.nh3_slip_kg += n_slip * dt * kM_NH3;
+  out_.adblue_kg_s = adblue;
+  out_.adblue_kg += adblue * dt;
+  out_.urea_kg += adblue * dt * p_.adblue_urea_mass_fraction;
+  out_.nox_conversion = nox_in_mol > 0.0 ? 1.0 - nox_out_mol / nox_in_mol : 0.0;
+  out_.nh3_stored_mol = scr_->storedMol();
+
+  const double a = p_.lightoff_filter_s > 0.0 ? -std::expm1(-dt / p_.lightoff_filter_s) : 1.0;
+  F_in_ += a * (in.nox_mass_flow_kg_s - F_in_);
+  F_out_ += a * (out_.tailpipe_nox_kg_s - F_out_);
+  const bool enough = F_in_ >= p_.lightoff_min_nox_kg_s && F_in_ > 0.0;
+  out_.nox_conversion_filtered = enough ? 1.0 - F_out_ / F_in_ : 0.0;
+  t_ += dt;
+  out_.light_off = enough && out_.nox_conversion_filtered >= p_.lightoff_conversion &&
+                   out_.brick_T_K[kSCR] >= p_.dosing_release_T_K;
+  if (out_.light_off && out_.light_off_time_s < 0.0) out_.light_off_time_s = t_;
+  T_amb_last_ = Tamb;
+}
+
+}  // namespace hbt::aftertreatment

@@ -1,0 +1,161 @@
+// Euro VI aftertreatment system DOC -> DPF -> SCR -> ASC of the bus engine: brick temperatures,
+// DOC oxidation, urea dosing, SCR NH3 storage and NOx reduction, NH3 slip catalyst, pressure drop
+// (engine back-pressure), energy and nitrogen balances. ROS-free, deterministic, no allocation in
+// step(). The bus's node is src/aftertreatment/node.
+//
+// Per step (inputs held over dt; bricks swept in flow direction):
+//  1. DOC, per slice i at wall temperature T_i, residence time tau_i = V_s / Vdot_i with
+//     Vdot_i = F_tot R T_i / p (F_tot total molar flow, p brick pressure of the last step):
+//       CO, HC: X = 1 - exp(-k(T_i) tau_i), k(T) = k_ref exp(-E/R (1/T - 1/T_ref)) [1/s]
+//         (first-order light-off: the conversion depends on T and on the space velocity
+//          SV = Vdot/V through k/SV; k_ref set so that CO/HC light off (50 %) near 200/230 degC
+//          at SV ~ 50,000 1/h, Russell & Epling, "Diesel oxidation catalysts", Catal. Rev. 53 (2011));
+//       NO + 1/2 O2 <-> NO2: NO2/NOx relaxes towards the equilibrium fraction
+//         f_eq = K sqrt(p_O2) / (1 + K sqrt(p_O2)), K = exp(-(dH - T dS)/(R T)) [atm^-1/2],
+//         dH = -57.1 kJ/mol, dS = -73.2 J/(mol K), at the rate k_f + k_r, k_r = k_f / (K sqrt(p_O2)):
+//         f_out = f_eq + (f_in - f_eq) exp(-(k_f + k_r) tau_i);
+//       heat released on the slice: 283 kJ/mol CO, LHV x HC, 57.1 kJ/mol NO2 formed.
+//  2. DPF: thermal model and wall-flow pressure drop with a constant soot load (no regeneration,
+//     no NO2-soot reaction).
+//  3. Urea dosing at the SCR inlet: if the gas entering the SCR is at or above the release
+//     temperature, NH3 feed = ANR_eff * NOx feed [mol/s] with
+//       ANR_eff = anr s,  s = clamp((fill_stop - phi)/(fill_stop - fill_start), 0, 1),
+//     phi = stored NH3 / target, target = Omega V sum_i theta_eq(T_i, ref_nh3_ppm)/N (the Temkin
+//     equilibrium storage, falling with T): a proportional storage controller -- a store below
+//     fill_start x target is fed at ANR = anr, dosing falls to zero as the store reaches
+//     fill_stop x target, and in steady state s settles where the feed equals consumption + slip.
+//     Urea = NH3/2 (CO(NH2)2 + H2O -> 2 NH3 + CO2); AdBlue = urea / 0.325. Evaporating and
+//     decomposing the AdBlue takes adblue_heat_J_kg from the gas (counted as (negative) reaction
+//     heat); the mass of the AdBlue is not added to the gas (< 0.3 % of the exhaust).
+//  4. SCR: ScrStorage (NH3 storage + standard/fast SCR + NH3 oxidation, CVODE).
+//  5. ASC: NH3 -> N2 (selectivity 1), X = 1 - exp(-k_asc(T_i) tau_i), 316.8 kJ/mol NH3.
+//  6. Pressure: from the tailpipe (ambient) upstream: muffler + pipes K rho u_pipe^2/2, then each
+//     brick at its mean gas temperature (Brick::pressureDrop): back-pressure at the turbine outlet
+//     p_bp = p_amb + sum dp (the pipe between turbine and DOC is not counted separately).
+// The thermal model of every brick is Brick (brick.hpp). Reaction heat is computed with the wall
+// temperatures at the start of the step and deposited over the step (explicit coupling).
+//
+// Balances (cumulative, exact up to round-off / solver tolerance):
+//   energy: H_in - H_out - Q_can + Q_reaction - dE_wall = 0,  H = mdot cp(T_in) (T - 298.15 K) dt
+//     with cp of the step frozen at the inlet temperature and composition;
+//   NH3:    dosed = stored - stored_0 + reacted (standard + 2 x fast + 4/3 NO2-SCR) + oxidised (SCR)
+//           + slip (SCR).
+// SCR light-off: first time at which the filtered SCR NOx conversion 1 - F_out/F_in >= 50 %
+// (F = NOx mass flows low-passed with lightoff/filter_s), with F_in >= lightoff/min_nox_kg_s and
+// the SCR mean wall temperature >= the dosing release temperature (the brick is warm).
+#pragma once
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "aftertreatment/ats_params.hpp"
+#include "aftertreatment/brick.hpp"
+#include "aftertreatment/gas.hpp"
+#include "aftertreatment/scr_storage.hpp"
+
+namespace hbt::aftertreatment {
+
+enum BrickId { kDOC = 0, kDPF = 1, kSCR = 2, kASC = 3, kNumBricks = 4 };
+
+struct AtsInputs {
+  double exhaust_mass_flow_kg_s = 0.0;  ///< [kg/s]
+  double exhaust_T_K = 298.15;          ///< gas at the turbine outlet [K]
+  GasComposition comp;                  ///< mass fractions [-]
+  double nox_mass_flow_kg_s = 0.0;      ///< engine-out NOx as NO2 [kg/s]
+  double hc_mass_flow_kg_s = 0.0;       ///< [kg/s]
+  double co_mass_flow_kg_s = 0.0;       ///< [kg/s]
+  double ambient_T_K = 298.15;
+  double ambient_p_Pa = 101325.0;
+  double vehicle_speed_m_s = 0.0;
+};
+
+/// Cumulative energy terms since reset() [J].
+struct AtsEnergy {
+  double enthalpy_in_J = 0.0, enthalpy_out_J = 0.0, can_loss_J = 0.0;
+  double reaction_heat_J = 0.0;  ///< released in the walls minus AdBlue evaporation
+  double stored_change_J = 0.0;  ///< wall energy change since reset
+  double residual_J() const {
+    return enthalpy_in_J - enthalpy_out_J - can_loss_J + reaction_heat_J - stored_change_J;
+  }
+};
+
+/// Cumulative NH3 / NOx counters since reset() [mol].
+struct AtsNitrogen {
+  double nh3_dosed_mol = 0.0;
+  double nh3_stored_change_mol = 0.0;  ///< stored now - stored at reset
+  double nh3_scr_reacted_mol = 0.0;    ///< consumed by standard, fast and NO2 SCR
+  double nh3_scr_oxidised_mol = 0.0;
+  double nh3_scr_slip_mol = 0.0;       ///< leaving the SCR
+  double nh3_asc_oxidised_mol = 0.0;
+  double nh3_tailpipe_mol = 0.0;
+  double nox_scr_in_mol = 0.0, nox_scr_out_mol = 0.0;
+  double residual_mol() const {
+    return nh3_dosed_mol - nh3_stored_change_mol - nh3_scr_reacted_mol - nh3_scr_oxidised_mol -
+           nh3_scr_slip_mol;
+  }
+};
+
+struct AtsOutputs {
+  std::array<double, kNumBricks> brick_T_K{};      ///< mean wall temperature per brick
+  std::array<double, kNumBricks> brick_out_T_K{};  ///< gas leaving each brick
+  std::array<double, kNumBricks> brick_dp_Pa{};    ///< pressure drop per brick
+  double muffler_dp_Pa = 0.0;
+  double outlet_T_K = 298.15;             ///< tailpipe gas temperature
+  double back_pressure_Pa = 101325.0;     ///< absolute, turbine outlet
+  double tailpipe_nox_kg_s = 0.0, tailpipe_nox_kg = 0.0;   ///< as NO2
+  double engine_nox_kg = 0.0;
+  double nh3_slip_kg_s = 0.0, nh3_slip_kg = 0.0;           ///< at the tailpipe (after ASC)
+  double adblue_kg_s = 0.0, adblue_kg = 0.0;               ///< AdBlue (32.5 % urea) dosed
+  double urea_kg = 0.0;                                    ///< pure urea dosed
+  double nox_conversion = 0.0;            ///< SCR, step average [-]
+  double nox_conversion_filtered = 0.0;   ///< SCR, low-passed (light-off criterion) [-]
+  double doc_no2_fraction = 0.0;          ///< NO2/NOx leaving the DOC [-]
+  double doc_co_conversion = 0.0;
+  double nh3_stored_mol = 0.0;
+  double anr = 0.0;                       ///< NH3/NOx feed ratio of the step
+  bool light_off = false;
+  double light_off_time_s = -1.0;         ///< -1 until light-off
+};
+
+/// The SCR kinetics and brick heat-transfer parameters of an AtsParams.
+ScrKinetics scrKinetics(const AtsParams& p);
+HeatTransferParams heatTransfer(const AtsParams& p);
+
+class Aftertreatment {
+ public:
+  explicit Aftertreatment(const AtsParams& p);
+
+  /// Cold start: every brick (substrate, washcoat, can) at T_K, SCR coverage from the parameters.
+  void reset(double T_K, double ambient_p_Pa = 101325.0);
+  /// Advances by dt [s]. Throws ModelDivergence (naming brick and quantity) on a non-physical
+  /// state or input.
+  void step(double dt, const AtsInputs& in);
+
+  const AtsOutputs& outputs() const { return out_; }
+  const AtsEnergy& energy() const { return energy_; }
+  const AtsNitrogen& nitrogen() const { return n_; }
+  const Brick& brick(int b) const { return *bricks_[b]; }
+  const ScrStorage& scr() const { return *scr_; }
+  const AtsParams& params() const { return p_; }
+  double time() const { return t_; }
+  /// Pressure drop of brick b for a mass flow at temperature T and pressure p (tests, reports).
+  PressureDrop brickPressureDrop(int b, double mdot_kg_s, double T_K, double p_Pa,
+                                 const GasComposition& g = {}) const;
+  /// NH3 storage target used by the dosing rule [mol].
+  double storageTarget_mol() const;
+
+ private:
+  double energyStored() const;
+  AtsParams p_;
+  DpfFlowParams dpf_;
+  std::array<std::unique_ptr<Brick>, kNumBricks> bricks_;
+  std::unique_ptr<ScrStorage> scr_;
+  std::vector<double> qr_, heat_J_, T_scr_;
+  std::array<double, kNumBricks> p_brick_{};  ///< mean pressure in each brick (last step)
+  AtsOutputs out_;
+  AtsEnergy energy_;
+  AtsNitrogen n_;
+  double t_ = 0.0, E0_ = 0.0, stored0_ = 0.0, F_in_ = 0.0, F_out_ = 0.0, T_amb_last_ = 298.15;
+};
+
+}  // namespace hbt::aftertreatment

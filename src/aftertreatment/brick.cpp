@@ -1,0 +1,131 @@
+#include "aftertreatment/brick.hpp"
+
+#include <cmath>
+
+#include "aftertreatment/gas.hpp"
+#include "common/errors.hpp"
+
+namespace hbt::aftertreatment {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kSigma = 5.670374e-8;  // Stefan-Boltzmann [W/(m^2 K^4)]
+}  // namespace
+
+Brick::Brick(std::string name, const BrickParams& p, const HeatTransferParams& h, bool wall_flow)
+    : name_(std::move(name)), p_(p), h_(h), wall_flow_(wall_flow), n_(p.slices) {
+  A_ = 0.25 * kPi * p.diameter_m * p.diameter_m;
+  V_ = A_ * p.length_m;
+  pitch_ = 0.0254 / std::sqrt(p.cpsi);
+  w_ = p.wall_thickness_mil * 25.4e-6;
+  d_ = pitch_ - w_;
+  ofa_ = (d_ / pitch_) * (d_ / pitch_);
+  gsa_ = 4.0 * d_ / (pitch_ * pitch_);
+  const double C = V_ * (1.0 - ofa_) * p.wall_density_kg_m3 * p.wall_cp_J_kgK +
+                   V_ * p.washcoat_g_L * p.washcoat_cp_J_kgK  // g/L == kg/m^3
+                   + p.can_mass_kg * p.can_cp_J_kgK;
+  C_slice_ = C / n_;
+  A_can_slice_ = kPi * (p.diameter_m + 2.0 * h.insulation_thickness_m) * p.length_m / n_ *
+                 h.can_length_factor;
+  T_.assign(n_, 298.15);
+}
+
+void Brick::setUniformTemperature(double T_K) { T_.assign(n_, T_K); }
+
+double Brick::meanT() const {
+  double s = 0.0;
+  for (double t : T_) s += t;
+  return s / n_;
+}
+
+double Brick::externalH(double T_wall_K, double T_amb_K, double v) const {
+  const double Tm = 0.5 * (T_wall_K + T_amb_K);
+  const double h_rad = 4.0 * h_.can_emissivity * kSigma * Tm * Tm * Tm;
+  double h_forced = 0.0;
+  const double u = h_.underbody_air_factor * v;
+  if (u > 0.0) {
+    // Air film at the mean of can and ambient temperature (ambient pressure).
+    const double rho = kAtm_Pa / (287.05 * Tm);
+    const double Dc = p_.diameter_m + 2.0 * h_.insulation_thickness_m;
+    const double Re = rho * u * Dc / viscosity(Tm);
+    const double Pr13 = std::cbrt(0.70);
+    const double Nu = Re < 4e4 ? 0.193 * std::pow(Re, 0.618) * Pr13 : 0.027 * std::pow(Re, 0.805) * Pr13;
+    h_forced = Nu * conductivity(Tm) / Dc;
+  }
+  return h_.h_natural_W_m2K + h_rad + h_forced;
+}
+
+double Brick::canUA(double T_wall_K, double T_amb_K, double v) const {
+  const double he = externalH(T_wall_K, T_amb_K, v);
+  const double R = h_.insulation_thickness_m / h_.insulation_k_W_mK + (he > 0.0 ? 1.0 / he : 1e12);
+  return A_can_slice_ / R;
+}
+
+double Brick::sliceHA(double T_K) const {
+  return h_.nusselt * conductivity(T_K) / d_ * gsa_ * V_ / n_;
+}
+
+double Brick::stepThermal(double dt, double mdot, double cp, double Tg, const double* qr,
+                          double T_amb, double v, BrickEnergy& e) {
+  const double mcp = mdot * cp;
+  for (int i = 0; i < n_; ++i) {
+    const double T0 = T_[i];
+    const double G = mcp > 0.0 ? -mcp * std::expm1(-sliceHA(Tg) / mcp) : 0.0;
+    const double UA = canUA(T0, T_amb, v);
+    const double Q = qr ? qr[i] : 0.0;
+    const double C = C_slice_;
+    const double a = G + UA;
+    double T1, Tbar;
+    if (a > 0.0) {
+      const double Teq = (G * Tg + Q + UA * T_amb) / a;
+      const double x = a * dt / C;
+      const double decay = std::exp(-x);
+      T1 = Teq + (T0 - Teq) * decay;
+      // mean over the step: Teq + (T0 - Teq) (1 - exp(-x)) / x
+      const double frac = x > 1e-8 ? -std::expm1(-x) / x : 1.0 - 0.5 * x;
+      Tbar = Teq + (T0 - Teq) * frac;
+    } else {
+      T1 = T0 + Q * dt / C;
+      Tbar = 0.5 * (T0 + T1);
+    }
+    if (!std::isfinite(T1) || T1 <= 0.0)
+      throw ModelDivergence("aftertreatment brick " + name_ + " slice " + std::to_string(i),
+                            "wall temperature", "non-physical value " + std::to_string(T1));
+    T_[i] = T1;
+    const double q_gas = G * (Tg - Tbar);
+    e.gas_to_wall_J += q_gas * dt;
+    e.can_loss_J += UA * (Tbar - T_amb) * dt;
+    e.reaction_J += Q * dt;
+    e.stored_J += C * (T1 - T0);
+    if (mcp > 0.0) Tg -= q_gas / mcp;
+    else Tg = Tbar;
+  }
+  return Tg;
+}
+
+PressureDrop Brick::pressureDrop(double Vdot, double T, double rho, const DpfFlowParams* dpf,
+                                 double Kc) const {
+  PressureDrop dp;
+  if (Vdot <= 0.0) return dp;
+  const double mu = viscosity(T);
+  const double L = p_.length_m;
+  if (!wall_flow_ || !dpf) {
+    const double u = Vdot / (A_ * ofa_);
+    dp.laminar_Pa = 0.5 * 56.91 * mu * u * L / (d_ * d_);
+    dp.minor_Pa = (Kc + (1.0 - ofa_) * (1.0 - ofa_)) * 0.5 * rho * u * u;
+    return dp;
+  }
+  const double N_in = A_ / (2.0 * pitch_ * pitch_);
+  const double A_f = 4.0 * d_ * L * N_in;
+  const double u_w = Vdot / A_f;
+  const double u0 = Vdot / (N_in * d_ * d_);
+  const double m_soot = dpf->soot_load_g_L * V_;  // g/L == kg/m^3
+  const double w_soot = m_soot / (dpf->soot_cake_density_kg_m3 * A_f);
+  dp.laminar_Pa = 28.45 * mu * u0 * L / (d_ * d_) + mu * u_w * w_ / dpf->wall_permeability_m2 +
+                  mu * u_w * w_soot / dpf->soot_permeability_m2;
+  const double open_in = 0.5 * ofa_;
+  dp.minor_Pa = (Kc + (1.0 - open_in) * (1.0 - open_in)) * 0.5 * rho * u0 * u0;
+  return dp;
+}
+
+}  // namespace hbt::aftertreatment

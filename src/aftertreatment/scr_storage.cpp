@@ -1,0 +1,199 @@
+#include "aftertreatment/scr_storage.hpp"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "aftertreatment/gas.hpp"
+#include "common/errors.hpp"
+
+namespace hbt::aftertreatment {
+
+namespace {
+constexpr double kDH_std = 407.1e3;   // J per mol NO (standard SCR)
+constexpr double kDH_fast = 757.0e3;  // J per fast-SCR event
+constexpr double kDH_no2 = 455.5e3;   // J per mol NO2 (NO2 SCR)
+constexpr double kDH_ox = 316.8e3;    // J per mol NH3 oxidised
+int rhsCallback(realtype, N_Vector y, N_Vector yd, void* ud) {
+  static_cast<const ScrStorage*>(ud)->rhs(N_VGetArrayPointer(y), N_VGetArrayPointer(yd));
+  return 0;
+}
+}  // namespace
+
+struct ScrStorage::Impl {
+  SUNContext ctx = nullptr;
+  void* mem = nullptr;
+  N_Vector y = nullptr, atol = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  int neq = 0;
+};
+
+ScrStorage::ScrStorage(const ScrKinetics& k, int slices, double Vs, double rtol, double atol_theta,
+                       int max_steps)
+    : impl_(new Impl), k_(k), n_(slices), Vs_(Vs), rtol_(rtol), atol_theta_(atol_theta),
+      max_steps_(max_steps), theta_(slices, 0.0), Vdot_(slices), kd_(slices), bT_(slices),
+      kstd_(slices), kfast_(slices), kno2_(slices), kox_(slices), scratch_(2 * slices + 5) {
+  Impl& m = *impl_;
+  m.neq = 2 * n_ + 5;
+  if (SUNContext_Create(nullptr, &m.ctx) != 0)
+    throw ModelDivergence("aftertreatment SCR", "CVODE", "SUNContext_Create failed");
+  m.y = N_VNew_Serial(m.neq, m.ctx);
+  m.atol = N_VNew_Serial(m.neq, m.ctx);
+  m.mem = CVodeCreate(CV_BDF, m.ctx);
+  m.A = SUNDenseMatrix(m.neq, m.neq, m.ctx);
+  m.LS = SUNLinSol_Dense(m.y, m.A, m.ctx);
+  if (!m.y || !m.atol || !m.mem || !m.A || !m.LS)
+    throw ModelDivergence("aftertreatment SCR", "CVODE", "allocation of solver memory failed");
+  double* y = N_VGetArrayPointer(m.y);
+  double* a = N_VGetArrayPointer(m.atol);
+  for (int i = 0; i < m.neq; ++i) y[i] = 0.0;
+  for (int i = 0; i < n_; ++i) a[i] = atol_theta_;
+  for (int i = n_; i < n_ + 5; ++i) a[i] = 1e-14;     // mol
+  for (int i = n_ + 5; i < m.neq; ++i) a[i] = 1e-8;   // J
+  if (CVodeInit(m.mem, &rhsCallback, 0.0, m.y) != CV_SUCCESS ||
+      CVodeSVtolerances(m.mem, rtol_, m.atol) != CV_SUCCESS ||
+      CVodeSetLinearSolver(m.mem, m.LS, m.A) != CV_SUCCESS ||
+      CVodeSetUserData(m.mem, this) != CV_SUCCESS ||
+      CVodeSetMaxNumSteps(m.mem, max_steps_) != CV_SUCCESS)
+    throw ModelDivergence("aftertreatment SCR", "CVODE", "solver set-up failed");
+}
+
+ScrStorage::~ScrStorage() {
+  Impl& m = *impl_;
+  if (m.mem) CVodeFree(&m.mem);
+  if (m.LS) SUNLinSolFree(m.LS);
+  if (m.A) SUNMatDestroy(m.A);
+  if (m.y) N_VDestroy(m.y);
+  if (m.atol) N_VDestroy(m.atol);
+  if (m.ctx) SUNContext_Free(&m.ctx);
+}
+
+void ScrStorage::setCoverage(double theta) { std::fill(theta_.begin(), theta_.end(), theta); }
+
+double ScrStorage::storedMol() const {
+  double s = 0.0;
+  for (double t : theta_) s += t;
+  return s * k_.omega_mol_m3 * Vs_;
+}
+
+double ScrStorage::equilibriumCoverage(double T, double c) const {
+  // f(theta) = k_ads c (1 - theta) - k_des exp(-E (1 - alpha theta)/RT) theta, decreasing in theta.
+  const double kd = k_.k_des * std::exp(-k_.E_des / (kRu * T));
+  const double b = k_.E_des * k_.alpha / (kRu * T);
+  double lo = 0.0, hi = 1.0;
+  for (int it = 0; it < 50; ++it) {
+    const double th = 0.5 * (lo + hi);
+    const double f = k_.k_ads * c * (1.0 - th) - kd * std::exp(b * th) * th;
+    (f > 0.0 ? lo : hi) = th;
+  }
+  return 0.5 * (lo + hi);
+}
+
+void ScrStorage::rhs(const double* y, double* yd, double* out) const {
+  const double Om = k_.omega_mol_m3;
+  double nNH3 = in_.n_NH3_mol_s, nNO = in_.n_NO_mol_s, nNO2 = in_.n_NO2_mol_s;
+  double sum_std = 0.0, sum_fast = 0.0, sum_no2 = 0.0, sum_ox = 0.0;
+  for (int i = 0; i < n_; ++i) {
+    const double th = std::clamp(y[i], 0.0, 1.0);
+    const double V = Vdot_[i];
+    const double r_des = kd_[i] * std::exp(bT_[i] * th) * Om * th;
+    const double kads = k_.k_ads * Om * (1.0 - th);
+    // NH3 (quasi-steady CSTR); with V = 0 the slice gas is at local equilibrium.
+    const double den = V + Vs_ * kads;
+    const double c3 = den > 0.0 ? (nNH3 + Vs_ * r_des) / den : 0.0;
+    const double r_ads = kads * c3;
+    // NO / NO2: A c1^2 + B c1 + C = 0 (see header)
+    // NO / NO2 with W = V + e:  (V+a) b c1^2 + [(V+a) W + b V (c2in - c1in)] c1 - V W c1in = 0,
+    // c2 = V c2in / (W + b c1)
+    const double a = Vs_ * kstd_[i] * Om * th, b = Vs_ * kfast_[i] * Om * th;
+    const double W = V + Vs_ * kno2_[i] * Om * th;
+    double c1 = 0.0, c2 = 0.0;
+    if (V > 0.0) {
+      const double c1in = nNO / V, c2in = nNO2 / V;
+      const double A2 = (V + a) * b, B2 = (V + a) * W + b * V * (c2in - c1in);
+      const double C2 = V * W * c1in;  // = -C of the quadratic
+      const double disc = std::sqrt(std::max(0.0, B2 * B2 + 4.0 * A2 * C2));
+      c1 = (C2 > 0.0) ? 2.0 * C2 / (B2 + disc) : 0.0;
+      c2 = V * c2in / (W + b * c1);
+    }
+    const double r_std = kstd_[i] * c1 * Om * th;
+    const double r_fast = kfast_[i] * c1 * c2 * Om * th;
+    const double r_no2 = kno2_[i] * c2 * Om * th;
+    const double r_ox = kox_[i] * Om * th;
+    yd[i] = (r_ads - r_des - r_std - 2.0 * r_fast - (4.0 / 3.0) * r_no2 - r_ox) / Om;
+    sum_std += Vs_ * r_std;
+    sum_fast += Vs_ * r_fast;
+    sum_no2 += Vs_ * r_no2;
+    sum_ox += Vs_ * r_ox;
+    yd[n_ + 5 + i] = Vs_ * (r_std * kDH_std + r_fast * kDH_fast + r_no2 * kDH_no2 + r_ox * kDH_ox);
+    nNH3 = V * c3;
+    nNO = V * c1;
+    nNO2 = V * c2;
+  }
+  yd[n_] = nNH3;
+  yd[n_ + 1] = sum_std;
+  yd[n_ + 2] = sum_fast;
+  yd[n_ + 3] = sum_no2;
+  yd[n_ + 4] = sum_ox;
+  if (out) {
+    out[0] = nNO;
+    out[1] = nNO2;
+    out[2] = nNH3;
+  }
+}
+
+ScrStepResult ScrStorage::step(double dt, const ScrInlet& in, const double* T_K, double* heat_J) {
+  Impl& m = *impl_;
+  in_ = in;
+  for (int i = 0; i < n_; ++i) {
+    const double T = T_K[i];
+    Vdot_[i] = in.n_total_mol_s * kRu * T / in.p_Pa;
+    kd_[i] = k_.k_des * std::exp(-k_.E_des / (kRu * T));
+    bT_[i] = k_.E_des * k_.alpha / (kRu * T);
+    kstd_[i] = k_.k_std_ref * std::exp(-k_.E_std / kRu * (1.0 / T - 1.0 / k_.T_ref));
+    kfast_[i] = k_.k_fast_ref * std::exp(-k_.E_fast / kRu * (1.0 / T - 1.0 / k_.T_ref));
+    kno2_[i] = k_.k_no2_ref * std::exp(-k_.E_no2 / kRu * (1.0 / T - 1.0 / k_.T_ref));
+    kox_[i] = k_.k_ox_ref * std::exp(-k_.E_ox / kRu * (1.0 / T - 1.0 / k_.T_ox_ref));
+  }
+  double* y = N_VGetArrayPointer(m.y);
+  for (int i = 0; i < n_; ++i) y[i] = theta_[i];
+  for (int i = n_; i < m.neq; ++i) y[i] = 0.0;
+  if (CVodeReInit(m.mem, 0.0, m.y) != CV_SUCCESS || CVodeSetStopTime(m.mem, dt) != CV_SUCCESS)
+    throw ModelDivergence("aftertreatment SCR", "NH3 coverage", "CVODE re-initialisation failed");
+  realtype t = 0.0;
+  const int flag = CVode(m.mem, dt, m.y, &t, CV_NORMAL);
+  if (flag < 0)
+    throw ModelDivergence("aftertreatment SCR", "NH3 coverage",
+                          "CVODE failed with flag " + std::to_string(flag));
+  long nst = 0;
+  CVodeGetNumSteps(m.mem, &nst);
+  steps_ += nst;
+  ScrStepResult r;
+  for (int i = 0; i < n_; ++i) {
+    if (!std::isfinite(y[i]) || y[i] < -1e-6 || y[i] > 1.0 + 1e-6)
+      throw ModelDivergence("aftertreatment SCR slice " + std::to_string(i), "NH3 coverage",
+                            "non-physical value " + std::to_string(y[i]));
+    theta_[i] = y[i];
+    if (heat_J) heat_J[i] = y[n_ + 5 + i];
+  }
+  r.nh3_slip_mol = y[n_];
+  r.std_mol = y[n_ + 1];
+  r.fast_mol = y[n_ + 2];
+  r.no2_mol = y[n_ + 3];
+  r.ox_mol = y[n_ + 4];
+  double out[3];
+  // Outlet flows at the end state (instantaneous values for reporting).
+  rhs(y, scratch_.data(), out);
+  r.n_NO_out_mol_s = out[0];
+  r.n_NO2_out_mol_s = out[1];
+  r.nh3_out_mol_s = out[2];
+  return r;
+}
+
+}  // namespace hbt::aftertreatment
