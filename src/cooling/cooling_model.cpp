@@ -56,6 +56,7 @@ void CoolingModel::reset(double ambient_T_K) {
   T_p_ = T_w_ - 0.5 * p_.thermostat.hysteresis_K;  // on the heating branch
   eng_ = 0.0;
   w_lt_ = p_.lt.pump_idle_speed_rad_s;
+  heater_valve_open_ = false;
   out_ = CoolingOutputs{};
   out_.coolant_ht_T_K = out_.metal_T_K = out_.coolant_lt_T_K = ambient_T_K;
   out_.ht_air_in_T_K = ambient_T_K;
@@ -150,7 +151,9 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
 
   double q_h_const = 0.0, g_h = 0.0;
   const auto& hp = p_.heater;
-  if (Ta < hp.balance_temperature_K && T_c_ >= hp.min_coolant_K) {
+  if (T_c_ >= hp.min_coolant_K) heater_valve_open_ = true;
+  if (T_c_ < hp.min_coolant_K - hp.lockout_hysteresis_K) heater_valve_open_ = false;
+  if (Ta < hp.balance_temperature_K && heater_valve_open_) {
     const double demand = hp.cabin_UA_W_K * (hp.balance_temperature_K - Ta);
     if (hp.conductance_W_K * (T_c_ - Ta) >= demand) q_h_const = demand;
     else g_h = hp.conductance_W_K;

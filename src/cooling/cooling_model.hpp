@@ -15,7 +15,8 @@
 //   Q̇_rad,LT = G_LT (T_l - T_a),                       G = ε C_min of the radiator (radiator.hpp)
 //   T_air,HT,in = T_a + Q̇_rad,LT/(ṁ_air c_p,air)        (LT radiator pre-heats the HT radiator air)
 //   Q̇_rad,HT = G_HT (T_c - T_air,HT,in)
-//   Q̇_heater = 0 if T_a >= T_bal or T_c < T_heat,min, else min(UA_cab (T_bal - T_a), G_h (T_c - T_a))
+//   Q̇_heater = 0 if T_a >= T_bal or the valve is shut, else min(UA_cab (T_bal - T_a), G_h (T_c - T_a));
+//   valve opens when T_c >= T_heat,min and shuts when T_c < T_heat,min - hysteresis
 // Coolant flows: V̇_pump = V̇_r ω_p/ω_r; radiator share y_eff = leak + (1 - leak) y, the rest
 // bypasses; ṁ_rad = ρ y_eff V̇_pump. LT: ṁ_lt = ρ V̇_lt,r ω_lt/ω_lt,max.
 // Thermostat: wax lag dT_w/dt = (T_c - T_w)/τ_w; play operator of half-width h = hysteresis/2,
@@ -119,6 +120,7 @@ class CoolingModel {
   double dp_rated_ = 0, dp0_ = 0, K_sys_ = 0, flow_free_r_ = 0;
   // State.
   double T_m_ = 0, T_c_ = 0, T_l_ = 0, T_w_ = 0, T_p_ = 0, eng_ = 0, w_lt_ = 0;
+  bool heater_valve_open_ = false;
   double T_m0_ = 0, T_c0_ = 0, T_l0_ = 0;
   CoolingOutputs out_;
 };

@@ -61,7 +61,8 @@ void CoolingParams::declare(ParamSet& ps) {
   ps.add("balance_temperature_K", c.balance_temperature_K, "K", 250.0, 310.0, "heating only below this ambient");
   ps.add("cabin_UA_W_K", c.cabin_UA_W_K, "W/K", 0.0, 1e4, "heat demand per K below balance");
   ps.add("conductance_W_K", c.conductance_W_K, "W/K", 0.0, 1e4, "heater-core limit G (T_cool - T_amb)");
-  ps.add("min_coolant_K", c.min_coolant_K, "K", 250.0, 380.0, "heater valve closed below this coolant T");
+  ps.add("min_coolant_K", c.min_coolant_K, "K", 250.0, 380.0, "heater valve opens at this coolant T");
+  ps.add("lockout_hysteresis_K", c.lockout_hysteresis_K, "K", 0.0, 30.0, "valve closes this much below min_coolant_K");
 
   LtCircuitParams& l = lt;
   ps.setPrefix("lt/");

@@ -67,7 +67,8 @@ struct HeaterParams {
   double balance_temperature_K = units::celsiusToK(15.0);  // no heating above this ambient
   double cabin_UA_W_K = 800.0;             // demand = UA (T_balance - T_amb)
   double conductance_W_K = 400.0;          // heater cores: max heat = G (T_cool - T_amb)
-  double min_coolant_K = units::celsiusToK(40.0);  // heater valve locked below this
+  double min_coolant_K = units::celsiusToK(40.0);  // heater valve opens at this coolant T
+  double lockout_hysteresis_K = 5.0;       // ... and closes again this much lower
 };
 
 /// Low-temperature (e-machine + power electronics) circuit with its radiator ahead of the HT one.
