@@ -134,6 +134,7 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
   const double w_fan_in = w_p * f.drive_ratio;
   const double n_fan = w_fan_in * (f.min_speed_ratio + (f.max_speed_ratio - f.min_speed_ratio) * eng_);
   const AirPoint air = airPath(n_fan, in.vehicle_speed_m_s);
+  const double fan_drive_W = air.power_W > 0.0 && n_fan > 0.0 ? air.power_W * w_fan_in / n_fan : air.power_W;
   const double m_air = rho_air * air.flow_m3_s;
   const double C_air = m_air * p_.air.cp_J_kgK;
 
@@ -218,6 +219,7 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
   o.fan_engagement = eng_;
   o.fan_speed_rad_s = n_fan;
   o.fan_power_W = air.power_W;
+  o.fan_drive_power_W = fan_drive_W;
   o.fan_pressure_rise_Pa = air.dp_Pa;
   o.pump_power_W = pump_W;
   o.lt_pump_speed_rad_s = w_lt;
@@ -233,6 +235,7 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
   o.radiator_coolant_flow_m3_s = q_rad;
   o.ht_air_in_T_K = Ta + pre * th(2);
   o.fan_energy_J += air.power_W * h;
+  o.fan_drive_energy_J += fan_drive_W * h;
   o.pump_energy_J += pump_W * h;
   o.lt_pump_energy_J += lt_in_W * h;
   o.engine_heat_J += in.engine_heat_W * h;

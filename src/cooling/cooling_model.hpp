@@ -31,6 +31,9 @@
 //   -> K V̇² + b V̇ - (a + K V̇_ram²) = 0, positive root. At v = 0: V̇ ∝ n, Δp ∝ n², P ∝ n³.
 //   P_fan = Δp_fan V̇/η (Δp_fan >= 0),  P_fan = η Δp_fan V̇ (Δp_fan < 0: the ram air drives the
 //   fan, windmilling, power < 0 = returned to the shaft). ṁ_air = ρ V̇, ρ = p/(R T_a).
+//   Crank-side (drive) power through the viscous clutch, same torque on both sides:
+//   P_drive = P_fan ω_in/n_fan for P_fan > 0 (includes the slip loss), P_drive = P_fan when
+//   windmilling (no slip loss booked).
 // Pumps (affinity laws): P_hyd = Δp_r V̇_r (ω/ω_r)³, P_shaft = P_hyd/η; LT pump input power
 //   through its viscous clutch P_in = P_shaft ω_in/ω_lt (same torque on both sides, slip loss).
 // LT pump rule: ω*_lt = ω_idle + (ω_max - ω_idle) clamp((T_l - T_lo)/(T_hi - T_lo)),
@@ -64,6 +67,7 @@ struct CoolingOutputs {
   double thermostat_opening = 0.0;     // [-]
   double fan_speed_rad_s = 0.0, fan_engagement = 0.0;
   double fan_power_W = 0.0;            // fan shaft power, signed (< 0 windmilling)
+  double fan_drive_power_W = 0.0;      // crank-side fan drive power incl. clutch slip, signed
   double fan_pressure_rise_Pa = 0.0;
   double pump_power_W = 0.0;           // HT pump shaft power [W]
   double lt_pump_speed_rad_s = 0.0;
@@ -75,7 +79,7 @@ struct CoolingOutputs {
   double coolant_flow_m3_s = 0.0, radiator_coolant_flow_m3_s = 0.0;
   double ht_air_in_T_K = 0.0;          // HT radiator air inlet (after the LT radiator) [K]
   // Cumulative since reset [J].
-  double fan_energy_J = 0.0, pump_energy_J = 0.0, lt_pump_energy_J = 0.0;
+  double fan_energy_J = 0.0, fan_drive_energy_J = 0.0, pump_energy_J = 0.0, lt_pump_energy_J = 0.0;
   double engine_heat_J = 0.0, lt_heat_J = 0.0;
   double radiator_ht_J = 0.0, radiator_lt_J = 0.0, heater_J = 0.0, surface_loss_J = 0.0;
   double stored_change_J = 0.0;        // Σ C (T - T_0)

@@ -196,9 +196,12 @@ TEST(CoolingFan, WindmillingSignAtHighRamAirAndPositiveAtStandstill) {
   mm.step(0.01, in);
   EXPECT_LT(mm.outputs().fan_power_W, 0.0);
   EXPECT_NEAR(mm.outputs().fan_speed_rad_s, rpmToRadps(700.0) * f.drive_ratio * f.min_speed_ratio, 1e-12);
+  EXPECT_EQ(mm.outputs().fan_drive_power_W, mm.outputs().fan_power_W);  // windmilling: no slip booked
   in.vehicle_speed_m_s = 0.0;
   mm.step(0.01, in);
   EXPECT_GT(mm.outputs().fan_power_W, 0.0);
+  // Through the disengaged viscous clutch the crank delivers the same torque at the input speed.
+  EXPECT_NEAR(mm.outputs().fan_drive_power_W, mm.outputs().fan_power_W / f.min_speed_ratio, 1e-9);
 }
 
 TEST(CoolingFan, FanLawsAtZeroRamAir) {

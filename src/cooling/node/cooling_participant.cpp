@@ -58,6 +58,7 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.lt_pump_speed_rad_s = o.lt_pump_speed_rad_s;
   s.metal_temperature_k = o.metal_T_K;
   s.ht_air_in_temperature_k = o.ht_air_in_T_K;
+  s.fan_drive_power_w = o.fan_drive_power_W;
   s.fan_engagement = o.fan_engagement;
   s.fan_pressure_rise_pa = o.fan_pressure_rise_Pa;
   s.air_volume_flow_m3_s = o.air_volume_flow_m3_s;
@@ -73,6 +74,7 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.engine_heat_w = last_in_.engine_heat_W;
   s.lt_heat_w = last_in_.lt_heat_W;
   s.fan_energy_j = o.fan_energy_J;
+  s.fan_drive_energy_j = o.fan_drive_energy_J;
   s.pump_energy_j = o.pump_energy_J;
   s.lt_pump_energy_j = o.lt_pump_energy_J;
   s.engine_heat_j = o.engine_heat_J;

@@ -4,7 +4,8 @@
 // Inputs  (stamped t_k): /engine/heat (EngineHeat: heat_to_coolant_w, coolant_pump_speed_rad_s),
 //                        /vehicle/to_cooling (VehicleToCooling: vehicle speed, ambient T, fan_demand).
 // Output  (stamped t_k): /cooling/state (CoolingState). fan_power_w is the signed fan shaft
-//                        power (> 0 drawn from the crank, < 0 windmilling = returned to it).
+//                        power (> 0 absorbed, < 0 windmilling = returned to the shaft);
+//                        fan_drive_power_w the same at the crank incl. the viscous-clutch slip.
 // Parameters: private namespace = config/cooling.yaml; /scenario/ambient_temperature_c (initial
 // state: everything at ambient, cold start); /scenario/ambient_pressure_pa (default 101325 Pa).
 // The LT heat input (e-machine + power electronics losses) is 0 until the hybrid's e-machine
