@@ -75,15 +75,16 @@ double CoolingModel::ltPumpTarget(double T_l) const {
   return l.pump_idle_speed_rad_s + (l.pump_max_speed_rad_s - l.pump_idle_speed_rad_s) * s;
 }
 
-CoolingModel::AirPoint CoolingModel::airPath(double n, double v) const {
+CoolingModel::AirPoint CoolingModel::airPath(double n, double v, double rho) const {
   const auto& f = p_.fan;
+  const double sr = rho > 0.0 ? rho / f.rated_air_density_kg_m3 : 1.0;  // all pressures ∝ ρ
   const double x = std::max(0.0, n) / f.rated_speed_rad_s;  // n/n_r
   const double a = dp0_ * x * x;
   const double b = dp0_ * x / flow_free_r_;
   const double q_ram = f.ram_recovery * std::abs(v) * f.grille_area_m2;
   const double c = a + K_sys_ * q_ram * q_ram;
   const double q = (-b + std::sqrt(b * b + 4.0 * K_sys_ * c)) / (2.0 * K_sys_);
-  const double dp = a - b * q;
+  const double dp = sr * (a - b * q);
   const double power = dp >= 0.0 ? dp * q / f.efficiency : dp * q * f.efficiency;
   return {q, dp, power};
 }
@@ -133,7 +134,7 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
 
   const double w_fan_in = w_p * f.drive_ratio;
   const double n_fan = w_fan_in * (f.min_speed_ratio + (f.max_speed_ratio - f.min_speed_ratio) * eng_);
-  const AirPoint air = airPath(n_fan, in.vehicle_speed_m_s);
+  const AirPoint air = airPath(n_fan, in.vehicle_speed_m_s, rho_air);
   const double fan_drive_W = air.power_W > 0.0 && n_fan > 0.0 ? air.power_W * w_fan_in / n_fan : air.power_W;
   const double m_air = rho_air * air.flow_m3_s;
   const double C_air = m_air * p_.air.cp_J_kgK;

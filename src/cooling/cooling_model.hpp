@@ -29,6 +29,7 @@
 //   Δp_r = P_r η/V̇_r,  V̇_free,r = r_free V̇_r  (i.e. ψ = ψ_0 (1 - φ/φ_free))
 //   Δp_sys = K V̇² = K V̇_ram² + Δp_fan,  K = Δp_r/V̇_r²,  V̇_ram = r_ram v A_grille
 //   -> K V̇² + b V̇ - (a + K V̇_ram²) = 0, positive root. At v = 0: V̇ ∝ n, Δp ∝ n², P ∝ n³.
+//   All pressures (fan, system, ram) scale with ρ/ρ_r: V̇ does not depend on ρ, Δp and P ∝ ρ.
 //   P_fan = Δp_fan V̇/η (Δp_fan >= 0),  P_fan = η Δp_fan V̇ (Δp_fan < 0: the ram air drives the
 //   fan, windmilling, power < 0 = returned to the shaft). ṁ_air = ρ V̇, ρ = p/(R T_a).
 //   Crank-side (drive) power through the viscous clutch, same torque on both sides:
@@ -106,9 +107,9 @@ class CoolingModel {
   double ltHeatCapacity_J_K() const { return C_l_; }
 
   /// Air path alone: volume flow [m^3/s], fan pressure rise [Pa] and signed fan power [W] at fan
-  /// speed n [rad/s], vehicle speed v [m/s].
+  /// speed n [rad/s], vehicle speed v [m/s], air density rho (<= 0: the rated density).
   struct AirPoint { double flow_m3_s, dp_Pa, power_W; };
-  AirPoint airPath(double fan_speed_rad_s, double vehicle_speed_m_s) const;
+  AirPoint airPath(double fan_speed_rad_s, double vehicle_speed_m_s, double rho_kg_m3 = 0.0) const;
   /// Thermostat opening from the play-operator state (heating curve when T_p = T_w - h).
   double openingFromPlay(double T_p) const;
   /// LT pump rule target speed at LT coolant temperature T [rad/s].

@@ -46,6 +46,7 @@ void CoolingParams::declare(ParamSet& ps) {
   ps.add("rated_flow_m3_s", f.rated_flow_m3_s, "m^3/s", 0.1, 50.0, "air flow at rated speed, standstill");
   ps.add("rated_power_W", f.rated_power_W, "W", 100.0, 1e5, "shaft power at the rated point");
   ps.add("efficiency", f.efficiency, "-", 0.1, 0.9, "fan efficiency (also as turbine when windmilling)");
+  ps.add("rated_air_density_kg_m3", f.rated_air_density_kg_m3, "kg/m^3", 0.5, 1.6, "air density of the rated point");
   ps.add("free_delivery_ratio", f.free_delivery_ratio, "-", 1.05, 5.0, "free-delivery / rated flow");
   ps.add("drive_ratio", f.drive_ratio, "-", 0.2, 5.0, "clutch input / crank speed");
   ps.add("min_speed_ratio", f.min_speed_ratio, "-", 0.0, 1.0, "fan/input speed, clutch disengaged");

@@ -52,6 +52,7 @@ struct FanParams {
   double rated_flow_m3_s = 4.0;            // at rated speed, standstill (no ram)
   double rated_power_W = 12000.0;          // shaft power at the rated point
   double efficiency = 0.45;                // total-to-static fan efficiency at that point
+  double rated_air_density_kg_m3 = 1.2;    // air density of the rated point
   double free_delivery_ratio = 1.6;        // V̇ at Δp_fan = 0 / rated V̇ (same speed)
   double drive_ratio = 1.2;                // clutch input shaft / crank speed
   double min_speed_ratio = 0.3;            // disengaged viscous clutch: fan/input speed

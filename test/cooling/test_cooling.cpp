@@ -217,6 +217,13 @@ TEST(CoolingFan, FanLawsAtZeroRamAir) {
     EXPECT_NEAR(a.flow_m3_s, p.fan.rated_flow_m3_s * x, 1e-12);
     EXPECT_NEAR(a.dp_Pa, r.dp_Pa * x * x, 1e-9 * r.dp_Pa);
   }
+  // Density: P ∝ ρ at the same speed, volume flow unchanged (also with ram air).
+  const double rho_r = p.fan.rated_air_density_kg_m3;
+  for (double v : {0.0, 10.0}) {
+    const auto a = m.airPath(0.6 * nr, v, rho_r), b = m.airPath(0.6 * nr, v, 1.1 * rho_r);
+    EXPECT_NEAR(b.power_W, 1.1 * a.power_W, 1e-9 * std::abs(a.power_W));
+    EXPECT_NEAR(b.flow_m3_s, a.flow_m3_s, 1e-12);
+  }
 }
 
 TEST(CoolingModel, ClosedThermostatWarmupIsExactLumpedHeating) {
