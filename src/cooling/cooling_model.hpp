@@ -1,0 +1,133 @@
+// Cooling system of the bus: high-temperature (engine) circuit with wax thermostat, radiator,
+// viscous-clutch fan and cabin heater, plus the low-temperature (e-machine + power electronics)
+// circuit whose radiator sits in front of the HT radiator in the same air stream. ROS-free,
+// deterministic, no allocation in step().
+//
+// States: T_m metal+oil [K], T_c HT coolant (engine outlet, well mixed) [K], T_l LT coolant [K],
+// T_w thermostat wax [K], T_p play-operator output of the wax temperature [K], e fan-clutch
+// engagement [-], ω_lt LT pump speed (clutch output, before the input-speed cap) [rad/s].
+//
+// Thermal network (Q̇ in W, C in J/K, G in W/K, T_a ambient):
+//   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_s (T_m - T_a)
+//   C_c dT_c/dt = G_mc (T_m - T_c) - Q̇_rad,HT - Q̇_heater
+//   C_l dT_l/dt = Q̇_LT,in - Q̇_rad,LT
+//   C_m = m_metal c_metal + m_oil c_oil,  C_c = ρ V c (HT coolant),  C_l = ρ V_lt c + C_components
+//   Q̇_rad,LT = G_LT (T_l - T_a),                       G = ε C_min of the radiator (radiator.hpp)
+//   T_air,HT,in = T_a + Q̇_rad,LT/(ṁ_air c_p,air)        (LT radiator pre-heats the HT radiator air)
+//   Q̇_rad,HT = G_HT (T_c - T_air,HT,in)
+//   Q̇_heater = 0 if T_a >= T_bal or the valve is shut, else min(UA_cab (T_bal - T_a), G_h (T_c - T_a));
+//   valve opens when T_c >= T_heat,min and shuts when T_c < T_heat,min - hysteresis
+// Coolant flows: V̇_pump = V̇_r ω_p/ω_r; radiator share y_eff = leak + (1 - leak) y, the rest
+// bypasses; ṁ_rad = ρ y_eff V̇_pump. LT: ṁ_lt = ρ V̇_lt,r ω_lt/ω_lt,max.
+// Thermostat: wax lag dT_w/dt = (T_c - T_w)/τ_w; play operator of half-width h = hysteresis/2,
+//   T_p <- clamp(T_p, T_w - h, T_w + h); y = clamp((T_p + h - T_start)/(T_full - T_start), 0, 1),
+//   so the heating curve opens at T_start..T_full and the cooling curve closes 2h lower.
+// Fan (viscous clutch): e* = max(clamp((T_c - T_e0)/(T_e1 - T_e0)), fan_demand),
+//   de/dt = (e* - e)/τ_f,  n_fan = ω_crank r_drive (s_min + (s_max - s_min) e)   [rad/s]
+// Air path (fan laws + linear fan curve in flow coefficient, quadratic system resistance):
+//   Δp_fan = Δp_0 (n/n_r)² - (Δp_0/V̇_free,r) (n/n_r) V̇,   Δp_0 = Δp_r/(1 - 1/r_free),
+//   Δp_r = P_r η/V̇_r,  V̇_free,r = r_free V̇_r  (i.e. ψ = ψ_0 (1 - φ/φ_free))
+//   Δp_sys = K V̇² = K V̇_ram² + Δp_fan,  K = Δp_r/V̇_r²,  V̇_ram = r_ram v A_grille
+//   -> K V̇² + b V̇ - (a + K V̇_ram²) = 0, positive root. At v = 0: V̇ ∝ n, Δp ∝ n², P ∝ n³.
+//   All pressures (fan, system, ram) scale with ρ/ρ_r: V̇ does not depend on ρ, Δp and P ∝ ρ.
+//   P_fan = Δp_fan V̇/η (Δp_fan >= 0),  P_fan = η Δp_fan V̇ (Δp_fan < 0: the ram air drives the
+//   fan, windmilling, power < 0 = returned to the shaft). ṁ_air = ρ V̇, ρ = p/(R T_a).
+//   Crank-side (drive) power through the viscous clutch, same torque on both sides:
+//   P_drive = P_fan ω_in/n_fan for P_fan > 0 (includes the slip loss), P_drive = P_fan when
+//   windmilling (no slip loss booked).
+// Pumps (affinity laws): P_hyd = Δp_r V̇_r (ω/ω_r)³, P_shaft = P_hyd/η; LT pump input power
+//   through its viscous clutch P_in = P_shaft ω_in/ω_lt (same torque on both sides, slip loss).
+// LT pump rule: ω*_lt = ω_idle + (ω_max - ω_idle) clamp((T_l - T_lo)/(T_hi - T_lo)),
+//   dω_lt/dt = (ω*_lt - ω_lt)/τ_lt, actual speed min(ω_lt, ω_crank r_lt).
+//
+// Integration: per substep (<= max_substep_s) the flows, ε and the heater branch are frozen at
+// the start of the substep and the linear 3x3 network is advanced by backward Euler (implicit,
+// unconditionally stable). The cumulative energies book exactly the fluxes of that update, so
+// heat in - heat out - Δstored = 0 to round-off. Lags (wax, clutch, LT pump) use the exact
+// exponential update with the new coolant temperature.
+#pragma once
+#include <Eigen/Dense>
+
+#include "cooling/cooling_params.hpp"
+#include "cooling/radiator.hpp"
+
+namespace hbt::cooling {
+
+struct CoolingInputs {
+  double engine_heat_W = 0.0;          // heat rejected by the engine to the HT circuit [W]
+  double pump_speed_rad_s = 0.0;       // HT pump shaft speed = crank speed (1:1) [rad/s]
+  double vehicle_speed_m_s = 0.0;      // for ram air [m/s]
+  double ambient_T_K = 298.15;         // [K]
+  double ambient_p_Pa = 101325.0;      // [Pa]
+  double lt_heat_W = 0.0;              // e-machine + power electronics losses [W] (0 baseline)
+  double fan_demand = 0.0;             // [-] extra fan request 0..1 (HVAC)
+};
+
+struct CoolingOutputs {
+  double coolant_ht_T_K = 0.0, metal_T_K = 0.0, coolant_lt_T_K = 0.0;
+  double thermostat_opening = 0.0;     // [-]
+  double fan_speed_rad_s = 0.0, fan_engagement = 0.0;
+  double fan_power_W = 0.0;            // fan shaft power, signed (< 0 windmilling)
+  double fan_drive_power_W = 0.0;      // crank-side fan drive power incl. clutch slip, signed
+  double fan_pressure_rise_Pa = 0.0;
+  double pump_power_W = 0.0;           // HT pump shaft power [W]
+  double lt_pump_speed_rad_s = 0.0;
+  double lt_pump_power_W = 0.0;        // LT pump clutch input power (shaft + slip) [W]
+  double lt_pump_hydraulic_power_W = 0.0;
+  double radiator_ht_heat_W = 0.0, radiator_lt_heat_W = 0.0, heater_heat_W = 0.0;
+  double surface_loss_W = 0.0;
+  double air_volume_flow_m3_s = 0.0, air_mass_flow_kg_s = 0.0;
+  double coolant_flow_m3_s = 0.0, radiator_coolant_flow_m3_s = 0.0;
+  double ht_air_in_T_K = 0.0;          // HT radiator air inlet (after the LT radiator) [K]
+  // Cumulative since reset [J].
+  double fan_energy_J = 0.0, fan_drive_energy_J = 0.0, pump_energy_J = 0.0, lt_pump_energy_J = 0.0;
+  double engine_heat_J = 0.0, lt_heat_J = 0.0;
+  double radiator_ht_J = 0.0, radiator_lt_J = 0.0, heater_J = 0.0, surface_loss_J = 0.0;
+  double stored_change_J = 0.0;        // Σ C (T - T_0)
+  double energy_residual_J = 0.0;      // in - out - stored change (ideally 0)
+  double warmup_time_s = -1.0;         // first time T_c >= opening start (-1 before)
+  double time_s = 0.0;
+};
+
+class CoolingModel {
+ public:
+  /// Validates p (throws InputError naming `file` and the key) and sizes the radiators.
+  explicit CoolingModel(const CoolingParams& p, const std::string& file = "(cooling parameters)");
+  /// Cold start: every temperature = ambient_T_K, clutches at rest (e = 0, LT pump idle),
+  /// thermostat closed, cumulatives 0.
+  void reset(double ambient_T_K);
+  /// Advances by dt_s with inputs held constant. Throws ModelDivergence naming the quantity.
+  void step(double dt_s, const CoolingInputs& in);
+  const CoolingOutputs& outputs() const { return out_; }
+  const CoolingParams& params() const { return p_; }
+  const Radiator& htRadiator() const { return rad_ht_; }
+  const Radiator& ltRadiator() const { return rad_lt_; }
+  double metalHeatCapacity_J_K() const { return C_m_; }
+  double coolantHeatCapacity_J_K() const { return C_c_; }
+  double ltHeatCapacity_J_K() const { return C_l_; }
+
+  /// Air path alone: volume flow [m^3/s], fan pressure rise [Pa] and signed fan power [W] at fan
+  /// speed n [rad/s], vehicle speed v [m/s], air density rho (<= 0: the rated density).
+  struct AirPoint { double flow_m3_s, dp_Pa, power_W; };
+  AirPoint airPath(double fan_speed_rad_s, double vehicle_speed_m_s, double rho_kg_m3 = 0.0) const;
+  /// Thermostat opening from the play-operator state (heating curve when T_p = T_w - h).
+  double openingFromPlay(double T_p) const;
+  /// LT pump rule target speed at LT coolant temperature T [rad/s].
+  double ltPumpTarget(double T_l) const;
+
+ private:
+  void substep(double h, const CoolingInputs& in);
+  void checkFinite(const CoolingInputs& in) const;
+  CoolingParams p_;
+  std::string file_;
+  Radiator rad_ht_, rad_lt_;
+  double C_m_ = 0, C_c_ = 0, C_l_ = 0;
+  double dp_rated_ = 0, dp0_ = 0, K_sys_ = 0, flow_free_r_ = 0;
+  // State.
+  double T_m_ = 0, T_c_ = 0, T_l_ = 0, T_w_ = 0, T_p_ = 0, eng_ = 0, w_lt_ = 0;
+  bool heater_valve_open_ = false;
+  double T_m0_ = 0, T_c0_ = 0, T_l0_ = 0;
+  CoolingOutputs out_;
+};
+
+}  // namespace hbt::cooling

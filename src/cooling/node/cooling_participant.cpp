@@ -1,0 +1,92 @@
+#include "cooling/node/cooling_participant.hpp"
+
+#include <hybrid_bus_twin/CoolingState.h>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "cosim/param_loader.hpp"
+
+namespace hbt::cooling {
+
+void CoolingParticipant::configure() {
+  CoolingParams p;
+  ParamSet ps;
+  p.declare(ps);
+  cosim::applyRosParams(pnh_, ps, configFile());
+  double ambient_c = 25.0;
+  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
+  nh_.param("/scenario/ambient_pressure_pa", ambient_p_Pa_, 101325.0);
+  if (!(ambient_c > -60.0 && ambient_c < 60.0))
+    throw InputError("scenario (launch argument)", "ambient_temperature_c", "must be in (-60, 60) degC");
+  if (!(ambient_p_Pa_ > 2e4 && ambient_p_Pa_ < 2e5))
+    throw InputError("scenario (launch argument)", "ambient_pressure_pa", "must be in (2e4, 2e5) Pa");
+  ambient_T_K_ = units::celsiusToK(ambient_c);
+  model_ = std::make_unique<CoolingModel>(p, configFile());
+  model_->reset(ambient_T_K_);  // cold start: metal, HT and LT coolant at ambient
+  last_in_.ambient_T_K = ambient_T_K_;
+  last_in_.ambient_p_Pa = ambient_p_Pa_;
+  heat_ = &addInput<hybrid_bus_twin::EngineHeat>("/engine/heat");
+  vehicle_ = &addInput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
+  state_pub_ = addOutput<hybrid_bus_twin::CoolingState>("/cooling/state");
+}
+
+void CoolingParticipant::step(const ros::Time& t, double dt_s) {
+  const auto& h = heat_->at(t);
+  const auto& v = vehicle_->at(t);
+  CoolingInputs in;
+  in.engine_heat_W = h.heat_to_coolant_w;
+  in.pump_speed_rad_s = h.coolant_pump_speed_rad_s;
+  in.vehicle_speed_m_s = v.vehicle_speed_m_s;
+  in.ambient_T_K = v.ambient_temperature_k > 0.0 ? v.ambient_temperature_k : ambient_T_K_;
+  in.ambient_p_Pa = ambient_p_Pa_;
+  in.fan_demand = v.fan_demand;
+  in.lt_heat_W = 0.0;  // e-machine + inverter losses: from the hybrid's e-machine node later
+  model_->step(dt_s, in);
+  last_in_ = in;
+}
+
+void CoolingParticipant::publishOutputs(const ros::Time& t) {
+  const CoolingOutputs& o = model_->outputs();
+  hybrid_bus_twin::CoolingState s;
+  s.header.stamp = t;
+  s.coolant_ht_temperature_k = o.coolant_ht_T_K;
+  s.coolant_lt_temperature_k = o.coolant_lt_T_K;
+  s.thermostat_opening = o.thermostat_opening;
+  s.fan_speed_rad_s = o.fan_speed_rad_s;
+  s.fan_power_w = o.fan_power_W;
+  s.pump_power_w = o.pump_power_W;
+  s.lt_pump_speed_rad_s = o.lt_pump_speed_rad_s;
+  s.metal_temperature_k = o.metal_T_K;
+  s.ht_air_in_temperature_k = o.ht_air_in_T_K;
+  s.fan_drive_power_w = o.fan_drive_power_W;
+  s.fan_engagement = o.fan_engagement;
+  s.fan_pressure_rise_pa = o.fan_pressure_rise_Pa;
+  s.air_volume_flow_m3_s = o.air_volume_flow_m3_s;
+  s.air_mass_flow_kg_s = o.air_mass_flow_kg_s;
+  s.coolant_flow_m3_s = o.coolant_flow_m3_s;
+  s.radiator_coolant_flow_m3_s = o.radiator_coolant_flow_m3_s;
+  s.lt_pump_power_w = o.lt_pump_power_W;
+  s.lt_pump_hydraulic_power_w = o.lt_pump_hydraulic_power_W;
+  s.radiator_ht_heat_w = o.radiator_ht_heat_W;
+  s.radiator_lt_heat_w = o.radiator_lt_heat_W;
+  s.heater_heat_w = o.heater_heat_W;
+  s.surface_loss_w = o.surface_loss_W;
+  s.engine_heat_w = last_in_.engine_heat_W;
+  s.lt_heat_w = last_in_.lt_heat_W;
+  s.fan_energy_j = o.fan_energy_J;
+  s.fan_drive_energy_j = o.fan_drive_energy_J;
+  s.pump_energy_j = o.pump_energy_J;
+  s.lt_pump_energy_j = o.lt_pump_energy_J;
+  s.engine_heat_j = o.engine_heat_J;
+  s.lt_heat_j = o.lt_heat_J;
+  s.radiator_ht_j = o.radiator_ht_J;
+  s.radiator_lt_j = o.radiator_lt_J;
+  s.heater_j = o.heater_J;
+  s.surface_loss_j = o.surface_loss_J;
+  s.stored_energy_change_j = o.stored_change_J;
+  s.energy_residual_j = o.energy_residual_J;
+  s.warmup_time_s = o.warmup_time_s;
+  state_pub_.publish(s);
+}
+
+}  // namespace hbt::cooling

@@ -1,0 +1,42 @@
+// ROS bridge of the cooling system: converts messages and parameters, nothing else. Model:
+// hbt::cooling::CoolingModel (../cooling_model.hpp).
+//
+// Inputs  (stamped t_k): /engine/heat (EngineHeat: heat_to_coolant_w, coolant_pump_speed_rad_s),
+//                        /vehicle/to_cooling (VehicleToCooling: vehicle speed, ambient T, fan_demand).
+// Output  (stamped t_k): /cooling/state (CoolingState). fan_power_w is the signed fan shaft
+//                        power (> 0 absorbed, < 0 windmilling = returned to the shaft);
+//                        fan_drive_power_w the same at the crank incl. the viscous-clutch slip.
+// Parameters: private namespace = config/cooling.yaml; /scenario/ambient_temperature_c (initial
+// state: everything at ambient, cold start); /scenario/ambient_pressure_pa (default 101325 Pa).
+// The LT heat input (e-machine + power electronics losses) is 0 until the hybrid's e-machine
+// publishes it; the model input exists (CoolingInputs::lt_heat_W).
+#pragma once
+#include <hybrid_bus_twin/EngineHeat.h>
+#include <hybrid_bus_twin/VehicleToCooling.h>
+
+#include <memory>
+
+#include "cooling/cooling_model.hpp"
+#include "cosim/participant.hpp"
+
+namespace hbt::cooling {
+
+class CoolingParticipant : public cosim::Participant {
+ public:
+  CoolingParticipant(ros::NodeHandle nh, ros::NodeHandle pnh) : Participant(nh, pnh) {}
+
+ protected:
+  void configure() override;
+  void publishOutputs(const ros::Time& t) override;
+  void step(const ros::Time& t, double dt_s) override;
+
+ private:
+  std::unique_ptr<CoolingModel> model_;
+  cosim::Input<hybrid_bus_twin::EngineHeat>* heat_ = nullptr;
+  cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
+  ros::Publisher state_pub_;
+  double ambient_T_K_ = 298.15, ambient_p_Pa_ = 101325.0;
+  CoolingInputs last_in_;
+};
+
+}  // namespace hbt::cooling
