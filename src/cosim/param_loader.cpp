@@ -61,6 +61,7 @@ ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
 void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::string& file,
                     std::vector<std::string> ignore_prefixes) {
   ignore_prefixes.push_back("config_file");
+  ignore_prefixes.push_back("cosim/");  // protocol keys read by the Participant base class
   applyParams(ps, loadParamSource(pnh, "", file), ignore_prefixes);
 }
 
