@@ -221,7 +221,7 @@ TEST(CosimCore, RecorderPeriodNotAMultipleFallsBackToBaseStep) {
 
 TEST(CosimCore, BadMacroStepRejectedBeforeStepZero) {
   const double bad[] = {0.015, 0.0, -0.01, std::nan("")};
-  const char* what[] = {"0.015000 s is not an integer multiple of the stepper's base step 0.010000 s",
+  const char* what[] = {"0.015 s is not an integer multiple of the stepper's base step 0.01 s",
                         "macro step must be > 0 s", "macro step must be > 0 s", "NaN"};
   for (int i = 0; i < 4; ++i) {
     Bus bus;

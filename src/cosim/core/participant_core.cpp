@@ -2,6 +2,7 @@
 
 #include <ctime>
 #include <exception>
+#include <sstream>
 
 #include "common/errors.hpp"
 
@@ -44,12 +45,11 @@ bool ParticipantCore::checkPeriod(double base_dt_s) {
       multiple_ = static_cast<uint32_t>(m);
       if (m > 1) dt_s_ = period_req_.period_s;
     } else if (!period_req_.fallback) {
+      std::ostringstream os;
+      os << period_req_.period_s << " s is not an integer multiple of the stepper's base step "
+         << base_dt_s << " s";
       fail("configuration failed: " +
-           std::string(InputError(period_req_.where, period_req_.key,
-                                  std::to_string(period_req_.period_s) +
-                                      " s is not an integer multiple of the stepper's base step " +
-                                      std::to_string(base_dt_s) + " s")
-                           .what()));
+           std::string(InputError(period_req_.where, period_req_.key, os.str()).what()));
       return false;
     }
   }
