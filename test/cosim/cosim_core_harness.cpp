@@ -28,7 +28,7 @@ StepLog FakeParticipant::readAll(Nanos t) const {
 void FakeParticipant::publishOutputs(Nanos t) {
   published.push_back(t);
   for (const auto& topic : outputs)
-    for (FakeInput* in : bus_.subscribers[topic]) bus_.post([in, t] { in->deliver(t, t); });
+    for (FakeInput* in : bus_.subscribers[topic]) bus_.postTopic([in, t] { in->deliver(t, t); });
 }
 
 void FakeParticipant::step(Nanos t, double dt_s) {
@@ -55,7 +55,10 @@ bool FakeParticipant::readyToClose(Nanos t_end) const {
   if (faults.never_ready_to_close) return false;
   if (!observer) return true;
   for (const auto& in : inputs)
-    if (!in->readyFor(t_end)) return false;
+    if (!in->readyFor(t_end)) {
+      ++close_waits;
+      return false;
+    }
   return true;
 }
 
@@ -105,9 +108,23 @@ void Bus::sendCommand(const Command& c) {
   }
 }
 
+void Bus::postTopic(std::function<void()> f) {
+  if (seed == 0) post(std::move(f));
+  else topic_pool.push_back(std::move(f));
+}
+
 void Bus::pump() {
-  for (std::size_t n = 0; !queue.empty(); ++n) {
+  for (std::size_t n = 0; !queue.empty() || !topic_pool.empty(); ++n) {
     if (n > 50000000) throw std::runtime_error("bus: runaway");
+    seed = seed * 1103515245u + 12345u;  // LCG: which lane, which message
+    const unsigned r = (seed >> 16) & 0x7fff;
+    if (!topic_pool.empty() && (queue.empty() || r % 2 == 0)) {
+      const std::size_t i = r % topic_pool.size();
+      auto f = std::move(topic_pool[i]);
+      topic_pool.erase(topic_pool.begin() + static_cast<long>(i));
+      f();
+      continue;
+    }
     auto f = std::move(queue.front());
     queue.pop_front();
     f();

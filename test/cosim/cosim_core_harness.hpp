@@ -72,6 +72,7 @@ class FakeParticipant : public ParticipantHooks {
   bool observer = false;
   uint64_t k_seen = 0;
   bool hung = false;
+  mutable int close_waits = 0;  // readyToClose() answered false
 
   void configure() override;
   void publishOutputs(Nanos t) override;
@@ -94,6 +95,10 @@ class Bus : public StepperTransport {
  public:
   double wall = 0.0;
   std::deque<std::function<void()>> queue;
+  /// Topic messages: delivered in order (seed 0) or, seed > 0, in a pseudo-random order
+  /// interleaved with commands and statuses (arrival order must not matter).
+  std::vector<std::function<void()>> topic_pool;
+  unsigned seed = 0;
   std::unique_ptr<StepperCore> stepper;
   std::vector<std::unique_ptr<FakeParticipant>> parts;
   std::map<std::string, std::vector<FakeInput*>> subscribers;
@@ -118,6 +123,7 @@ class Bus : public StepperTransport {
     completed_wall = wall;
   }
   void post(std::function<void()> f) { queue.push_back(std::move(f)); }
+  void postTopic(std::function<void()> f);
   void pump();
 };
 
