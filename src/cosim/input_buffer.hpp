@@ -1,21 +1,37 @@
 // Per-topic input buffer of a lock-step participant: messages are kept by header.stamp so that a
-// step uses exactly the inputs stamped for it, never "whatever arrived last".
+// step uses exactly the message its held-value rule names (core::HeldRule, set at START from the
+// producer's macro step and group), never "whatever arrived last".
 #pragma once
 #include <ros/ros.h>
 
+#include <functional>
 #include <map>
 #include <string>
 
+#include "cosim/core/participant_core.hpp"
+
 namespace hbt::cosim {
 
-class InputBase {
+inline ros::Time fromNanos(core::Nanos ns) {
+  ros::Time t;
+  t.fromNSec(static_cast<uint64_t>(ns));
+  return t;
+}
+
+class InputBase : public core::InputPort {
  public:
   explicit InputBase(std::string topic) : topic_(std::move(topic)) {}
-  virtual ~InputBase() = default;
   const std::string& topic() const { return topic_; }
+  /// True if the message stamped exactly t is buffered.
   virtual bool has(const ros::Time& t) const = 0;
   virtual void dropBefore(const ros::Time& t) = 0;
   virtual uint32_t numPublishers() const = 0;
+  /// Stamp of the message read for a step starting at t (t itself until START; see participant.hpp).
+  ros::Time heldStamp(const ros::Time& t) const { return fromNanos(stampFor(t.toNSec())); }
+
+  std::string resolvedTopic() const override { return topic_; }
+  bool hasStamp(core::Nanos s) const override { return has(fromNanos(s)); }
+  void dropStampsBefore(core::Nanos s) override { dropBefore(fromNanos(s)); }
 
  protected:
   std::string topic_;
@@ -30,10 +46,12 @@ class Input : public InputBase {
     sub_ = nh.subscribe<M>(topic, 1000, &Input::callback, this, ros::TransportHints().tcpNoDelay());
   }
   bool has(const ros::Time& t) const override { return buf_.count(t) > 0; }
-  /// The message stamped exactly t (must be present: check has(t) first).
-  const M& at(const ros::Time& t) const { return *buf_.at(t); }
+  /// The input of the step starting at t: the message stamped heldStamp(t) (present once the
+  /// participant's step(t, dt) is called).
+  const M& at(const ros::Time& t) const { return *buf_.at(heldStamp(t)); }
   void dropBefore(const ros::Time& t) override { buf_.erase(buf_.begin(), buf_.lower_bound(t)); }
   uint32_t numPublishers() const override { return sub_.getNumPublishers(); }
+  std::string resolvedTopic() const override { return sub_.getTopic(); }
 
  private:
   void callback(const Ptr& msg) {

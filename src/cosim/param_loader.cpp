@@ -62,6 +62,7 @@ void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::s
                     std::vector<std::string> ignore_prefixes) {
   ignore_prefixes.push_back("config_file");
   ignore_prefixes.push_back("loops/");  // engine loop switches (engine_ports.hpp), not model keys
+  ignore_prefixes.push_back("cosim/");  // protocol keys read by the Participant base class
   applyParams(ps, loadParamSource(pnh, "", file), ignore_prefixes);
 }
 

@@ -17,8 +17,9 @@ ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
                             const std::string& file);
 
 /// Applies the private parameters of a participant (`pnh`) to a model's ParamSet: the one call a
-/// node makes. `file` = the YAML they came from; the node's own key `config_file` and any key
-/// starting with one of `ignore_prefixes` are not reported as unknown. Throws hbt::InputError.
+/// node makes. `file` = the YAML they came from; the node's own key `config_file`, the protocol
+/// keys `cosim/...` (e.g. cosim/macro_step_s, read by cosim::Participant) and any key starting
+/// with one of `ignore_prefixes` are not reported as unknown. Throws hbt::InputError.
 void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::string& file,
                     std::vector<std::string> ignore_prefixes = {});
 

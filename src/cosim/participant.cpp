@@ -1,12 +1,15 @@
+// ROS transport of core::ParticipantCore: StepCommand -> core events, core statuses -> StepStatus,
+// the announce timer, link checks against the master, and the calls into the subclass's model.
 #include "cosim/participant.hpp"
 
 #include <ros/master.h>
 
 #include <cmath>
-#include <ctime>
-#include <exception>
+#include <cstdlib>
 #include <set>
 #include <sstream>
+
+#include "common/errors.hpp"
 
 namespace hbt::cosim {
 
@@ -14,12 +17,6 @@ using hybrid_bus_twin::StepCommand;
 using hybrid_bus_twin::StepStatus;
 
 namespace {
-
-double cpuNow() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 int64_t dtNs(double dt_s) { return std::llround(dt_s * 1e9); }
 
@@ -37,6 +34,12 @@ std::map<std::string, std::set<std::string>> masterSubscribers() {
   return out;
 }
 
+std::string defaultName(const std::string& name, const ros::NodeHandle& pnh) {
+  if (!name.empty()) return name;
+  const std::string& ns = pnh.getNamespace();  // the node (or nodelet) name
+  return ns.substr(ns.find_last_of('/') + 1);
+}
+
 }  // namespace
 
 ros::Time stepTime(uint64_t k, double dt_s) {
@@ -51,13 +54,62 @@ ros::Time addStep(const ros::Time& t, double dt_s) {
   return r;
 }
 
-Participant::Participant(ros::NodeHandle nh, ros::NodeHandle pnh, std::string name)
-    : nh_(std::move(nh)), pnh_(std::move(pnh)), name_(std::move(name)) {
-  if (name_.empty()) {  // the node (or nodelet) name: last component of the private namespace
-    const std::string& ns = pnh_.getNamespace();
-    name_ = ns.substr(ns.find_last_of('/') + 1);
+/// The core's view of this participant: model calls and the status transport.
+class Participant::Hooks : public core::ParticipantHooks {
+ public:
+  explicit Hooks(Participant& p) : p_(p) {}
+  void configure() override {
+    p_.readMacroStep();
+    p_.configure();
   }
-}
+  void publishOutputs(core::Nanos t) override { p_.publishOutputs(fromNanos(t)); }
+  void step(core::Nanos t, double dt_s) override { p_.step(fromNanos(t), dt_s); }
+  bool finished() const override { return p_.finished(); }
+  void close(core::Nanos t, bool aborted) override { p_.close(fromNanos(t), aborted); }
+  bool readyToClose(core::Nanos t) const override { return p_.readyToClose(fromNanos(t)); }
+  void logError(const std::string& m) override { ROS_ERROR_STREAM(m); }
+  std::string missingLinks() const override {
+    std::ostringstream os;
+    for (const auto& in : p_.inputs_)
+      if (in->numPublishers() == 0) os << " input " << in->topic() << " has no publisher;";
+    const auto subs = masterSubscribers();
+    for (const auto& pub : p_.outputs_) {
+      const auto it = subs.find(pub.getTopic());
+      const std::size_t want = it == subs.end() ? 0 : it->second.size();
+      if (pub.getNumSubscribers() < want)
+        os << " output " << pub.getTopic() << " has " << pub.getNumSubscribers() << "/" << want
+           << " subscribers connected;";
+    }
+    if (p_.cmd_sub_.getNumPublishers() == 0) os << " /sim/step not connected;";
+    return os.str();
+  }
+  void sendStatus(const core::Status& c) override {
+    StepStatus s;
+    s.header.stamp = fromNanos(c.t);
+    s.node = c.node;
+    s.status = static_cast<uint8_t>(c.status);
+    s.step = c.step;
+    s.cpu_time_s = c.cpu_time_s;
+    s.message = c.message;
+    s.outputs = c.outputs;
+    s.observer = c.observer;
+    s.mission_duration_s = c.mission_duration_s;
+    s.step_multiple = c.step_multiple;
+    p_.status_pub_.publish(s);
+  }
+
+ private:
+  Participant& p_;
+};
+
+Participant::Participant(ros::NodeHandle nh, ros::NodeHandle pnh, std::string name)
+    : nh_(std::move(nh)),
+      pnh_(std::move(pnh)),
+      name_(defaultName(name, pnh_)),
+      hooks_(std::make_unique<Hooks>(*this)),
+      core_(name_, *hooks_) {}
+
+Participant::~Participant() = default;
 
 std::string Participant::configFile() const {
   std::string f;
@@ -65,144 +117,61 @@ std::string Participant::configFile() const {
   return f;
 }
 
+void Participant::readMacroStep() {
+  const std::string key = "cosim/macro_step_s";
+  XmlRpc::XmlRpcValue v;
+  if (!pnh_.getParam(key, v)) return;  // absent: the stepper's base step
+  double s = 0.0;
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) s = static_cast<double>(v);
+  else if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) s = static_cast<int>(v);
+  else {
+    // PyYAML (YAML 1.1) reads 1e-1 as a string: take a string that is entirely a number
+    const std::string str = v.getType() == XmlRpc::XmlRpcValue::TypeString ? std::string(v) : "";
+    char* end = nullptr;
+    s = str.empty() ? 0.0 : std::strtod(str.c_str(), &end);
+    if (str.empty() || *end != '\0') throw InputError(configFile(), key, "must be a number [s]");
+  }
+  core_.requestPeriod({s, configFile(), key, false});
+}
+
 void Participant::start() {
   std::lock_guard<std::recursive_mutex> lock(mutex_);
   status_pub_ = nh_.advertise<StepStatus>("/sim/status", 100);
   cmd_sub_ = nh_.subscribe<StepCommand>("/sim/step", 100, &Participant::onCommand, this,
                                         ros::TransportHints().tcpNoDelay());
-  try {
-    const double c0 = cpuNow();
-    configure();
-    cpu_s_ += cpuNow() - c0;
-    configured_ = true;
-  } catch (const std::exception& e) {
-    fail(std::string("configuration failed: ") + e.what());
-  }
+  core_.start();
   announce_timer_ = nh_.createWallTimer(ros::WallDuration(0.1), &Participant::onAnnounceTimer, this);
-}
-
-void Participant::fail(const std::string& what) {
-  failed_ = true;
-  error_ = name_ + ": " + what;
-  ROS_ERROR_STREAM(error_);
-  report(StepStatus::ERROR, k_pending_, t_pending_, error_);
-}
-
-void Participant::report(uint8_t status, uint64_t step, const ros::Time& stamp,
-                         const std::string& msg) {
-  StepStatus s;
-  s.header.stamp = stamp;
-  s.node = name_;
-  s.status = status;
-  s.step = step;
-  s.cpu_time_s = cpu_s_;
-  s.message = msg;
-  status_pub_.publish(s);
 }
 
 void Participant::onAnnounceTimer(const ros::WallTimerEvent&) {
   std::lock_guard<std::recursive_mutex> lock(mutex_);
-  if (failed_) { report(StepStatus::ERROR, k_pending_, t_pending_, error_); return; }
-  if (synced_) { announce_timer_.stop(); return; }
-  report(StepStatus::ANNOUNCE, 0, ros::Time(0));
+  if (!core_.onAnnounceTick()) announce_timer_.stop();
 }
 
-std::string Participant::missingLinks() const {
-  std::ostringstream os;
-  for (const auto& in : inputs_)
-    if (in->numPublishers() == 0) os << " input " << in->topic() << " has no publisher;";
-  const auto subs = masterSubscribers();
-  for (const auto& p : outputs_) {
-    const auto it = subs.find(p.getTopic());
-    const std::size_t want = it == subs.end() ? 0 : it->second.size();
-    if (p.getNumSubscribers() < want)
-      os << " output " << p.getTopic() << " has " << p.getNumSubscribers() << "/" << want
-         << " subscribers connected;";
-  }
-  if (cmd_sub_.getNumPublishers() == 0) os << " /sim/step not connected;";
-  return os.str();
-}
-
-void Participant::onCommand(const StepCommand::ConstPtr& cmd) {
+void Participant::onArrival() {
   std::lock_guard<std::recursive_mutex> lock(mutex_);
-  if (closed_) return;
-  switch (cmd->command) {
-    case StepCommand::SYNC: {
-      if (failed_) { report(StepStatus::ERROR, cmd->step, ros::Time(0), error_); return; }
-      if (!configured_) return;
-      const std::string missing = missingLinks();
-      report(missing.empty() ? StepStatus::READY : StepStatus::WAITING, cmd->step, ros::Time(0),
-             missing);
-      return;
-    }
-    case StepCommand::STEP:
-      if (failed_) { report(StepStatus::ERROR, cmd->step, cmd->header.stamp, error_); return; }
-      synced_ = true;
-      pending_ = true;
-      k_pending_ = cmd->step;
-      t_pending_ = cmd->header.stamp;
-      dt_pending_s_ = cmd->dt_s;
-      tryStep();
-      return;
-    case StepCommand::FINISH:
-      pending_ = false;
-      closing_ = true;
-      t_close_ = cmd->header.stamp;
-      k_close_ = cmd->step;
-      tryClose();
-      return;
-    case StepCommand::ABORT:
-      try {
-        close(cmd->header.stamp, true);
-      } catch (const std::exception& e) {
-        ROS_ERROR_STREAM(name_ << ": closing failed: " << e.what());
-      }
-      closed_ = true;
-      pending_ = false;
-      report(StepStatus::CLOSED, cmd->step, cmd->header.stamp, cmd->reason);
-      return;
-    default:
-      return;
-  }
+  core_.onArrival();
 }
 
-void Participant::tryClose() {
-  if (!closing_ || closed_ || !readyToClose(t_close_)) return;
-  try {
-    close(t_close_, false);
-  } catch (const std::exception& e) {
-    ROS_ERROR_STREAM(name_ << ": closing failed: " << e.what());
-  }
-  closed_ = true;
-  closing_ = false;
-  report(StepStatus::CLOSED, k_close_, t_close_);
-}
-
-void Participant::tryStep() {
+void Participant::onCommand(const StepCommand::ConstPtr& m) {
   std::lock_guard<std::recursive_mutex> lock(mutex_);
-  if (closing_) { tryClose(); return; }
-  if (!pending_ || failed_ || closed_) return;
-  const ros::Time t = t_pending_;
-  if (!published_initial_) {
-    publishOutputs(t);
-    published_initial_ = true;
+  core::Command c;
+  c.command = static_cast<core::Cmd>(m->command);
+  if (m->command > StepCommand::START) return;  // unknown command
+  c.step = m->step;
+  c.t = static_cast<core::Nanos>(m->header.stamp.toNSec());
+  c.dt_s = m->dt_s;
+  c.group = m->group;
+  c.reason = m->reason;
+  if (m->command == StepCommand::START) {
+    c.table.topics = m->topics;
+    c.table.topic_multiple = m->topic_multiple;
+    c.table.topic_group = m->topic_group;
+    c.table.participants = m->participants;
+    c.table.participant_multiple = m->participant_multiple;
+    c.table.participant_group = m->participant_group;
   }
-  for (const auto& in : inputs_)
-    if (!in->has(t)) return;  // wait for the inputs stamped t_k
-  pending_ = false;
-  const ros::Time t_next = addStep(t, dt_pending_s_);
-  try {
-    const double c0 = cpuNow();
-    step(t, dt_pending_s_);
-    cpu_s_ += cpuNow() - c0;
-    publishOutputs(t_next);
-  } catch (const std::exception& e) {
-    fail(std::string("step ") + std::to_string(k_pending_) + " (t = " +
-         std::to_string(t.toSec()) + " s) failed: " + e.what());
-    return;
-  }
-  for (const auto& in : inputs_) in->dropBefore(t_next);
-  report(finished() ? StepStatus::FINISHED : StepStatus::DONE, k_pending_, t_next);
+  core_.onCommand(c);
 }
 
 }  // namespace hbt::cosim

@@ -1,19 +1,36 @@
-// Lock-step co-simulation participant: the one implementation of the step protocol, used by every
-// node of the twin (as a process or as a nodelet).
+// Lock-step co-simulation participant: the one implementation of the step protocol used by every
+// node of the twin (as a process or as a nodelet). The protocol itself is the ROS-free state
+// machine core::ParticipantCore (core/participant_core.hpp, tested in-process); this class only
+// translates StepCommand/StepStatus messages, timers and topics into its events.
 //
-// Protocol (the master stepper drives it, see stepper.hpp):
+// Protocol (the master stepper drives it, see stepper.hpp and core/stepper_core.hpp):
 //  1. start-up: configure() reads and validates parameters (hbt::InputError -> ERROR status naming
-//     file and key); the participant ANNOUNCEs itself every 100 ms (wall) until the first SYNC.
-//     On each SYNC round r it checks its links -- every input has a connected publisher and every
-//     output has as many connected subscribers as the master lists -- and answers READY(r) or
-//     WAITING(r). Step 0 starts only after one round in which everyone answered READY, so no
-//     message of t = 0 is lost and the recorder is subscribed before time starts.
-//  2. STEP k (stamp t_k): at k = 0 the participant first publishes its outputs at t_0. It then
-//     waits (event driven, no blocking) until every input has a message stamped exactly t_k,
-//     calls step(t_k, dt), publishes its outputs stamped t_k + dt and answers DONE(k)
-//     (FINISHED(k) when finished() says the participant has reached the end of its input).
-//     All couplings are thus explicit (Jacobi) with one macro step of delay: deterministic.
-//  3. FINISH / ABORT: close() flushes files; the participant answers CLOSED.
+//     file and key); the participant ANNOUNCEs itself every 100 ms (wall) with its output topics,
+//     until START. On each SYNC round r it checks its links -- every input has a connected
+//     publisher and every output has as many connected subscribers as the master lists -- and
+//     answers READY(r) or WAITING(r). After one round in which everyone answered READY the stepper
+//     sends START with the table of producers (topic -> macro step, group); every participant then
+//     publishes its outputs stamped t_0 = 0, so nothing of t = 0 is lost.
+//  2. Rates. The stepper's base step is dt (launch `step`). A participant's macro step P is
+//     `cosim/macro_step_s` in its private namespace (its YAML; absent = dt). P must be an
+//     integer multiple m of dt (checked before step 0: not a multiple, <= 0, NaN, not a number ->
+//     ERROR naming the file and the key). The stepper commands it only at base steps k with
+//     k % m == 0: step(t_k, P) advances t_k -> t_k + P and its outputs are stamped t_k + P; they
+//     hold (are what every consumer reads) until its next step.
+//  3. Held values. At STEP k (stamp t_k) the participant waits (event driven) until every input
+//     has the message its rule names, then calls step(t_k, P); Input::at(t_k) returns it. For a
+//     producer of macro step P_p:
+//        Jacobi (producer in the same or a later group):  stamped floor(t_k / P_p) * P_p
+//        Gauss-Seidel (producer in an earlier group):      stamped floor(t_k / P_p) * P_p + P_p
+//     i.e. at one rate and one group (the default) exactly the message stamped t_k (one macro step
+//     of delay, Jacobi), and for an earlier group its fresh value stamped t_{k+1}. Deterministic,
+//     independent of arrival order. The recorder (an observer) always reads by the Jacobi rule.
+//  4. Groups (stepper param `order`): within base step k the stepper commands group 1, waits for
+//     all its DONE, then group 2, ... The recorder is in the last group.
+//  5. The participant answers DONE(k), or FINISHED(k) when finished() says it reached the end of
+//     its input -- the only end-of-mission signal (the mission duration, for the progress line
+//     only, travels in ANNOUNCE: setMissionDuration()).
+//  6. FINISH / ABORT: close() flushes files (FINISH waits for readyToClose()); answers CLOSED.
 // Any exception thrown by the model is reported as ERROR with the participant's name and the
 // message; the stepper then aborts the run.
 #pragma once
@@ -26,6 +43,7 @@
 #include <string>
 #include <vector>
 
+#include "cosim/core/participant_core.hpp"
 #include "cosim/input_buffer.hpp"
 
 namespace hbt::cosim {
@@ -34,80 +52,83 @@ class Participant {
  public:
   /// `name` identifies the participant to the stepper; empty = the node/nodelet name.
   Participant(ros::NodeHandle nh, ros::NodeHandle pnh, std::string name = "");
-  virtual ~Participant() = default;
+  virtual ~Participant();
   Participant(const Participant&) = delete;
   Participant& operator=(const Participant&) = delete;
 
   /// Configures the model and joins the protocol. Never throws: errors become ERROR statuses.
   void start();
   const std::string& name() const { return name_; }
-  bool failed() const { return failed_; }
+  bool failed() const { return core_.failed(); }
 
  protected:
   /// Reads parameters (private namespace) and builds the model; declare inputs/outputs here.
   virtual void configure() = 0;
   /// Publishes the outputs describing the current state, stamped t.
   virtual void publishOutputs(const ros::Time& t) = 0;
-  /// Advances the model from t to t + dt_s; inputs stamped t are available via Input::at(t).
+  /// Advances the model from t to t + dt_s (dt_s = this participant's macro step); the inputs
+  /// held at t are available via Input::at(t).
   virtual void step(const ros::Time& t, double dt_s) = 0;
   /// True once this participant reached the end of its input (e.g. end of the mission).
   virtual bool finished() const { return false; }
   /// Flush and close files (FINISH or ABORT). `t_end` is the time of the last state.
   virtual void close(const ros::Time& t_end, bool aborted) {}
   /// At FINISH, close() is delayed until this returns true (e.g. the recorder waits for the
-  /// outputs stamped t_end); ABORT closes at once.
+  /// outputs held at t_end); ABORT closes at once.
   virtual bool readyToClose(const ros::Time& t_end) const { return true; }
   /// For inputs that are not typed messages (the recorder's raw topics).
   InputBase& addCustomInput(std::unique_ptr<InputBase> in) {
     inputs_.push_back(std::move(in));
+    core_.addInput(inputs_.back().get());
     return *inputs_.back();
   }
-  std::function<void()> arrivalCallback() { return [this] { tryStep(); }; }
+  std::function<void()> arrivalCallback() { return [this] { onArrival(); }; }
   const std::vector<std::unique_ptr<InputBase>>& inputs() const { return inputs_; }
 
   template <class M>
   Input<M>& addInput(const std::string& topic) {
-    auto in = std::make_unique<Input<M>>(nh_, topic, [this] { tryStep(); });
+    auto in = std::make_unique<Input<M>>(nh_, topic, arrivalCallback());
     Input<M>& ref = *in;
-    inputs_.push_back(std::move(in));
+    addCustomInput(std::move(in));
     return ref;
   }
   template <class M>
   ros::Publisher addOutput(const std::string& topic) {
     ros::Publisher p = nh_.advertise<M>(topic, 1000);
     outputs_.push_back(p);
+    core_.addOutput(p.getTopic());
     return p;
   }
   /// The YAML file the parameters of this participant came from (param `config_file`).
   std::string configFile() const;
+  /// End of this participant's input [s] (e.g. the mission), announced for the progress line.
+  void setMissionDuration(double s) { core_.setMissionDuration(s); }
+  /// Overrides `cosim/macro_step_s` (e.g. the recorder's record period). `fallback`: a period
+  /// that is not a multiple of the base step runs at the base step instead of failing.
+  void setMacroStep(double s, const std::string& where, const std::string& key, bool fallback) {
+    core_.requestPeriod({s, where, key, fallback});
+  }
+  /// Reads only, publishes nothing that others step on (the recorder): Jacobi reads, last group.
+  void setObserver(bool o) { core_.setObserver(o); }
 
   ros::NodeHandle nh_, pnh_;
 
  private:
+  class Hooks;
   void onCommand(const hybrid_bus_twin::StepCommand::ConstPtr& cmd);
   void onAnnounceTimer(const ros::WallTimerEvent&);
-  void tryStep();
-  void tryClose();
-  void report(uint8_t status, uint64_t step, const ros::Time& stamp, const std::string& msg = "");
-  std::string missingLinks() const;
-  void fail(const std::string& what);
+  void onArrival();
+  void readMacroStep();
 
   std::string name_;
+  std::unique_ptr<Hooks> hooks_;
+  core::ParticipantCore core_;
   std::vector<std::unique_ptr<InputBase>> inputs_;
   std::vector<ros::Publisher> outputs_;
   ros::Publisher status_pub_;
   ros::Subscriber cmd_sub_;
   ros::WallTimer announce_timer_;
   std::recursive_mutex mutex_;
-  bool configured_ = false, failed_ = false, synced_ = false, closed_ = false;
-  bool pending_ = false, published_initial_ = false, closing_ = false;
-  ros::Time t_close_;
-  uint64_t k_close_ = 0;
-  ros::Time t_pending_;
-  uint64_t k_pending_ = 0;
-  double dt_pending_s_ = 0.0;
-  double cpu_s_ = 0.0;
-  std::string error_;
 };
 
 /// Simulated time of step k, computed in integer nanoseconds so that every node agrees exactly.

@@ -19,9 +19,11 @@ class Recorder::RawInput : public InputBase {
                                                    ros::TransportHints().tcpNoDelay());
   }
   bool has(const ros::Time& t) const override { return buf_.count(t) > 0; }
-  const Ptr& at(const ros::Time& t) const { return buf_.at(t); }
+  /// The message held at t (see participant.hpp: the Jacobi rule of an observer).
+  const Ptr& at(const ros::Time& t) const { return buf_.at(heldStamp(t)); }
   void dropBefore(const ros::Time& t) override { buf_.erase(buf_.begin(), buf_.lower_bound(t)); }
   uint32_t numPublishers() const override { return sub_.getNumPublishers(); }
+  std::string resolvedTopic() const override { return sub_.getTopic(); }
 
  private:
   void callback(const Ptr& msg) {
@@ -56,6 +58,10 @@ void Recorder::configure() {
   if (!(period_s >= 0.0 && period_s <= 3600.0))
     throw InputError(where, "record_period_s", "must be in [0, 3600] s");
   period_ns_ = static_cast<uint64_t>(std::llround(period_s * 1e9));
+  // Stepped only at the record period when it is a multiple of the base step (else at every
+  // base step, writing the multiples of the period); reads each topic's held value.
+  setObserver(true);
+  if (period_ns_ > 0) setMacroStep(period_s, where, "record_period_s", true);
   bag_ = std::make_unique<rosbag::Bag>();
   try {
     bag_->open(bag_file, rosbag::bagmode::Write);
@@ -82,7 +88,7 @@ void Recorder::writeAt(const ros::Time& t) {
 
 bool Recorder::readyToClose(const ros::Time& t_end) const {
   for (RawInput* in : topics_)
-    if (!in->has(t_end)) return false;
+    if (!in->readyFor(t_end.toNSec())) return false;
   return true;
 }
 

@@ -1,8 +1,10 @@
 // Recorder participant: writes every output topic of the run to a rosbag, in lock-step.
 //
-// At step k it waits until each recorded topic has its message stamped t_k and writes them in a
-// fixed (sorted) topic order with bag time = header.stamp, so two runs of one scenario give
-// identical bag contents. At FINISH it waits for the final outputs (stamped t_end), writes them
+// At each of its steps t it waits until each recorded topic has its message held at t (stamped
+// floor(t / P) * P for a producer of macro step P: the Jacobi rule of participant.hpp, whatever the
+// groups) and writes them in a fixed (sorted) topic order with bag time = t, so two runs of one
+// scenario give identical bag contents. It is an observer: stepped in the last group, at the
+// record period when that is a multiple of the base step (else at every base step). At FINISH it waits for the final outputs (stamped t_end), writes them
 // and closes the bag; at ABORT it writes what is complete and closes the bag, which stays
 // readable. Topics are recorded type-erased (topic_tools::ShapeShifter), so the recorder does not
 // depend on the message types.

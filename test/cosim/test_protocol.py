@@ -2,7 +2,9 @@
 """Step-protocol tests on the two-mass oscillator scenario (test/cosim/oscillator.launch):
 lock-step results against the exact solution, convergence of the coupling error with the
 macro step, bit-identical repeated runs, a killed node stopping the run within 2 s with a
-message naming it and a readable bag, and a bad parameter rejected with its key named."""
+message naming it and a readable bag, a bad parameter rejected with its key named; multi-rate
+(mass_b at twice the base step) with ordered groups end to end, and bad macro step / order keys
+rejected before step 0 naming the file or parameter and the key."""
 import math
 import os
 import signal
@@ -84,6 +86,44 @@ class Protocol(unittest.TestCase):
         self.assertIn("mass_a", st["message"])
         self.assertIn("mass_kg", st["message"])
         self.assertEqual(st["steps"], 0, "no step may run with a bad parameter")
+
+    def test_multirate_ordered_groups(self):
+        """mass_b steps every 2 ms (base 1 ms) after mass_a (Gauss-Seidel); the recorder, every
+        1 ms, writes each topic's held value: mass_b's state stamped floor(t / 2 ms) * 2 ms."""
+        out = os.path.join(self.tmp, "multirate")
+        st = run_util.run_launch(LAUNCH, out, step=0.001, until=0.5, b_macro_step=0.002,
+                                 order="[[mass_a], [mass_b]]", record_period=0)
+        self.assertEqual(st["status"], "ok", st)
+        self.assertEqual(st["steps"], 500)
+        import rosbag
+        with rosbag.Bag(os.path.join(out, "run.bag")) as b:
+            rows = [(topic, t.to_nsec(), m.header.stamp.to_nsec())
+                    for topic, m, t in b.read_messages()]
+        ms = 1000000
+        for topic, period in (("/mass_a/state", ms), ("/mass_b/state", 2 * ms)):
+            got = [(t, stamp) for tp, t, stamp in rows if tp == topic]
+            want = [(max(1, i * ms), i * ms // period * period) for i in range(501)]  # t=0 at 1 ns
+            self.assertEqual(got, want, topic)
+        err, n = max_error(os.path.join(out, "run.bag"))
+        self.assertEqual(n, 501)
+        self.assertLess(err, 0.03)
+
+    def test_bad_macro_step_and_order_name_key(self):
+        out = os.path.join(self.tmp, "bad_rate")
+        st = run_util.run_launch(LAUNCH, out, timeout_s=60, step=0.001, until=1.0,
+                                 b_macro_step=0.0015)
+        self.assertEqual(st["status"], "error")
+        self.assertIn("mass_b", st["message"])
+        self.assertIn("cosim/macro_step_s", st["message"])
+        self.assertIn("not an integer multiple", st["message"])
+        self.assertEqual(st["steps"], 0)
+        out = os.path.join(self.tmp, "bad_order")
+        st = run_util.run_launch(LAUNCH, out, timeout_s=60, step=0.001, until=1.0,
+                                 order="[[mass_a], [nobody]]")
+        self.assertEqual(st["status"], "error")
+        self.assertIn("key 'order'", st["message"])
+        self.assertIn("nobody", st["message"])
+        self.assertEqual(st["steps"], 0)
 
 
 if __name__ == "__main__":

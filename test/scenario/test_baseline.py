@@ -3,8 +3,10 @@
 nodes vs nodelets and repeated runs give bit-identical bags; the driveline energy balance of the
 run closes and the engine's own brake work agrees with the work the vehicle received; a killed
 node stops the run within 2 s naming it with a readable bag; bad input (missing, malformed or
-truncated cycle, negative mass, unknown key, NaN) is rejected before the first step with a
-message naming the file and the key."""
+truncated cycle, negative mass, unknown key, NaN, a macro step that is not a multiple of the base
+step, a bad `order`) is rejected before the first step with a message naming the file and the key;
+the engine at twice the base step, stepped after the vehicle, runs and is recorded by its held
+value."""
 import json
 import os
 import shutil
@@ -181,6 +183,32 @@ class Failures(unittest.TestCase):
     def test_nan_parameter(self):
         cfg = self.config_copy("engine_map.yaml", lambda t: t.replace("volumetric_efficiency: 0.90", "volumetric_efficiency: .nan", 1))
         self.expect_rejected("engine_map.yaml", "volumetric_efficiency", config=cfg)
+
+    def test_bad_macro_step(self):
+        cfg = self.config_copy("engine_map.yaml", lambda t: t + "\ncosim:\n  macro_step_s: 0.015\n")
+        self.expect_rejected("engine_map.yaml", "cosim/macro_step_s", config=cfg)
+
+    def test_bad_order(self):
+        self.expect_rejected("stepper", "'order'", order="[[vehicle], [engine], [vehicle]]")
+
+    def test_multirate_ordered_run(self):
+        """The engine at 20 ms (its YAML's cosim/ key passes the model's unknown-key check),
+        vehicle then engine (Gauss-Seidel): the run completes, recorded every 10 ms."""
+        cfg = self.config_copy("engine_map.yaml", lambda t: t + "\ncosim:\n  macro_step_s: 0.02\n")
+        out = os.path.join(self.tmp, "mr")
+        st = run_util.run_launch(LAUNCH, out, until=5.0, config=cfg, order="[[vehicle], [engine]]",
+                                 record_period=0.01)
+        self.assertEqual(st["status"], "ok", st)
+        self.assertEqual(st["steps"], 500)
+        import struct
+        got = []
+        for topic, t, raw in run_util.bag_messages(os.path.join(out, "run.bag")):
+            if topic == "/engine/state":
+                sec, nsec = struct.unpack("<II", raw[4:12])  # std_msgs/Header: seq, stamp
+                got.append((t, sec * 10**9 + nsec))
+        ms = 1000000
+        # the engine's state held between its steps: stamped floor(t / 20 ms) * 20 ms
+        self.assertEqual(got, [(max(1, i * 10 * ms), i * 10 * ms // (20 * ms) * 20 * ms) for i in range(501)])
 
     def test_killed_node_stops_run(self):
         out = os.path.join(self.tmp, "kill")

@@ -56,7 +56,7 @@ void VehicleParticipant::configure() {
   mp.profile_csv_file = out_dir.empty() ? "" : out_dir + "/profile.csv";
   profile_ = mission::buildMissionProfile(mp);
   if (!out_dir.empty()) writeStops(out_dir + "/stops.csv");
-  nh_.setParam("/sim/mission_duration_s", profile_.duration_s());
+  setMissionDuration(profile_.duration_s());  // announced to the stepper (progress line only)
 
   const auto& cyc = profile_.cycle();
   std::vector<double> grade(cyc.grade_percent.size());

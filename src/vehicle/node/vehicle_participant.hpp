@@ -12,7 +12,7 @@
 // drag area, rolling resistance and rotating mass so that the profile is planned for this bus);
 // /scenario/{ambient_temperature_c, payload_kg, cycle_file, out_dir, package_dir}.
 // Side outputs at start-up: <out_dir>/profile.csv (time-based target profile) and
-// <out_dir>/stops.csv (stop positions and times); /sim/mission_duration_s.
+// <out_dir>/stops.csv (stop positions and times); the mission duration in its ANNOUNCE.
 #pragma once
 #include <hybrid_bus_twin/CoolingState.h>
 #include <hybrid_bus_twin/EngineState.h>

@@ -1,0 +1,130 @@
+// In-process harness for the ROS-free protocol core: a StepperCore and several ParticipantCores
+// wired by a FIFO "bus" (commands, statuses and topic messages are queued and delivered in order)
+// under a simulated wall clock (50 ms stepper ticks, 100 ms announce ticks). Each fake participant
+// publishes, on each output topic, the stamp itself as value, so a consumer's log shows exactly
+// which stamp it read at each step. Faults are switched on per participant.
+#pragma once
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cosim/core/participant_core.hpp"
+#include "cosim/core/stepper_core.hpp"
+
+namespace hbt::cosim::core::testing {
+
+class Bus;
+
+class FakeInput : public InputPort {
+ public:
+  FakeInput(std::string topic, std::function<void()> arrived)
+      : topic_(std::move(topic)), arrived_(std::move(arrived)) {}
+  std::string resolvedTopic() const override { return topic_; }
+  bool hasStamp(Nanos s) const override { return buf_.count(s) > 0; }
+  void dropStampsBefore(Nanos s) override { buf_.erase(buf_.begin(), buf_.lower_bound(s)); }
+  void deliver(Nanos stamp, Nanos value) {
+    buf_[stamp] = value;
+    arrived_();
+  }
+  /// Value read for a step starting at t (the stamp published = value).
+  Nanos at(Nanos t) const { return buf_.at(stampFor(t)); }
+
+ private:
+  std::string topic_;
+  std::function<void()> arrived_;
+  std::map<Nanos, Nanos> buf_;
+};
+
+struct Faults {
+  bool configure_throws = false;
+  bool never_announce = false;        // never starts: no ANNOUNCE, no answers
+  std::string missing_links;          // answered to every SYNC (links never ready)
+  int64_t throw_at_step = -1;         // step() throws at this k
+  int64_t silent_from_step = -1;      // ignores every command from this STEP k on (hung)
+  double finish_at_s = -1.0;          // finished() once t >= this
+  bool never_ready_to_close = false;  // readyToClose() false forever
+};
+
+struct StepLog {
+  Nanos t;
+  double dt_s;
+  std::map<std::string, Nanos> read;  // topic -> stamp read
+};
+
+class FakeParticipant : public ParticipantHooks {
+ public:
+  FakeParticipant(Bus& bus, std::string name, std::vector<std::string> inputs,
+                  std::vector<std::string> outputs, Faults f);
+  ParticipantCore core;
+  std::vector<std::unique_ptr<FakeInput>> inputs;
+  std::vector<std::string> outputs;
+  Faults faults;
+  std::vector<StepLog> steps;
+  std::vector<Nanos> published;     // stamps of publishOutputs
+  std::vector<Nanos> closed_at;     // close(t_end)
+  std::vector<bool> closed_aborted;
+  std::vector<StepLog> records;     // observer: what was written (step or close)
+  std::function<void(ParticipantCore&)> on_configure;
+  bool observer = false;
+  uint64_t k_seen = 0;
+  bool hung = false;
+  mutable int close_waits = 0;  // readyToClose() answered false
+
+  void configure() override;
+  void publishOutputs(Nanos t) override;
+  void step(Nanos t, double dt_s) override;
+  bool finished() const override;
+  void close(Nanos t_end, bool aborted) override;
+  bool readyToClose(Nanos t_end) const override;
+  std::string missingLinks() const override { return faults.missing_links; }
+  void sendStatus(const Status& s) override;
+  void logError(const std::string&) override {}
+  void command(const Command& c);
+
+ private:
+  Bus& bus_;
+  Nanos t_ = 0;
+  StepLog readAll(Nanos t) const;
+};
+
+class Bus : public StepperTransport {
+ public:
+  double wall = 0.0;
+  std::deque<std::function<void()>> queue;
+  /// Topic messages: delivered in order (seed 0) or, seed > 0, in a pseudo-random order
+  /// interleaved with commands and statuses (arrival order must not matter).
+  std::vector<std::function<void()>> topic_pool;
+  unsigned seed = 0;
+  std::unique_ptr<StepperCore> stepper;
+  std::vector<std::unique_ptr<FakeParticipant>> parts;
+  std::map<std::string, std::vector<FakeInput*>> subscribers;
+  std::vector<Command> commands;
+  std::vector<Nanos> clocks;
+  std::vector<std::string> warnings;
+  bool completed = false;
+  double completed_wall = -1.0;
+
+  FakeParticipant& add(const std::string& name, std::vector<std::string> in,
+                       std::vector<std::string> out, Faults f = {});
+  /// A recorder-like observer of `topics`, period request `period_s` (0 = base) with fallback.
+  FakeParticipant& addRecorder(std::vector<std::string> topics, double period_s = 0.0);
+  FakeParticipant& get(const std::string& name);
+  void run(StepperConfig cfg, double max_wall_s = 120.0);
+
+  void sendCommand(const Command& c) override;
+  void publishClock(Nanos t) override { clocks.push_back(t); }
+  void warn(const std::string& m) override { warnings.push_back(m); }
+  void complete() override {
+    completed = true;
+    completed_wall = wall;
+  }
+  void post(std::function<void()> f) { queue.push_back(std::move(f)); }
+  void postTopic(std::function<void()> f);
+  void pump();
+};
+
+}  // namespace hbt::cosim::core::testing
