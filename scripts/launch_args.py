@@ -68,6 +68,8 @@ ARGS = {
     "cycle_file": existing("file"),
     "config": existing("dir"),
     "architecture": choice("conventional"),
+    "thermal": choice("true", "false"),
+    "order": lambda v, repo, config=None: v,  # Gauss-Seidel groups: checked by the stepper before step 0
 }
 
 

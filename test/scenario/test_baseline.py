@@ -54,7 +54,7 @@ class Baseline(unittest.TestCase):
     def test_modes_and_repeats_bit_identical(self):
         bags = {n: run_util.bag_messages(os.path.join(o, "run.bag")) for n, (o, _) in self.runs.items()}
         n_steps = int(round(UNTIL / 0.01)) + 1
-        self.assertEqual(len(bags["nodes"]), 6 * n_steps, "6 topics at every stamp incl. t=0")
+        self.assertEqual(len(bags["nodes"]), 8 * n_steps, "8 topics at every stamp incl. t=0")
         self.assertEqual(bags["nodes"], bags["nodes2"])
         self.assertEqual(bags["nodes"], bags["nodelets"])
 
@@ -76,6 +76,30 @@ class Baseline(unittest.TestCase):
         self.assertGreater(eff, 0.10)
         self.assertLess(eff, 0.46)
 
+
+    def test_thermal_loops_visible_and_held(self):
+        """The engine steps on the coolant temperature and back-pressure stamped for its step
+        (Jacobi: the state at t - dt; the cooling node steps every 0.1 s, so its value is held:
+        stamped floor((t - dt) / 0.1 s) * 0.1 s); the vehicle's fan work is the cooling node's."""
+        import rosbag
+        bag = os.path.join(self.runs["nodes"][0], "run.bag")
+        by = {"/engine/state": {}, "/cooling/state": {}, "/aftertreatment/state": {}}
+        with rosbag.Bag(bag) as b:
+            for topic, m, _ in b.read_messages(topics=list(by)):
+                by[topic][m.header.stamp.to_nsec()] = m
+        dt, P = 10**7, 10**8
+        checked = 0
+        for t, e in by["/engine/state"].items():
+            if t < dt:
+                continue
+            tc = (t - dt) // P * P
+            self.assertEqual(e.coolant_temperature_k, by["/cooling/state"][tc].coolant_ht_temperature_k, t)
+            self.assertEqual(e.back_pressure_pa, by["/aftertreatment/state"][t - dt].back_pressure_pa, t)
+            checked += 1
+        self.assertGreater(checked, 5000)
+        e = by["/engine/state"][max(by["/engine/state"])]
+        self.assertGreater(e.friction_correction_nm, 0.0)  # a cold start at 25 degC: cold oil
+        self.assertGreater(e.back_pressure_pa, 101325.0)
 
     def test_energy_ledger_in_summary(self):
         """summary.json carries the ledger; it closes to 0.1 % and every key is finite."""

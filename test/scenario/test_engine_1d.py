@@ -6,6 +6,7 @@ equals the work the vehicle's driveline received (1 %); the mean efficiency of t
 plausible; engine-out NOx is produced; the solver is selectable (fsm and tvd both run)."""
 import math
 import os
+import shutil
 import sys
 import tempfile
 import unittest
@@ -70,6 +71,46 @@ class Engine1DScenario(unittest.TestCase):
         eff = e.positive_work_j / (e.fuel_mass_kg * LHV_J_KG)
         self.assertGreater(eff, 0.05)
         self.assertLess(eff, 0.46)
+
+
+class Engine1DLoops(unittest.TestCase):
+    """The 1D engine's loops close: over the same 20 s (idle, then the first acceleration; the same driver demand, the idle
+    governor's), a higher exhaust back-pressure from the ATS (DPF soot 2 -> 10 g/L) raises the
+    fuel (more pumping work), and a cold coolant (cold start at 25 degC, the cooling node) burns
+    more than the warm defaults of an engine without thermal nodes (oil-viscosity friction)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="hbt_1d_loops_")
+        cfg = os.path.join(cls.tmp, "config")
+        shutil.copytree(os.path.join(REPO, "config"), cfg, ignore=shutil.ignore_patterns("data"))
+        os.symlink(os.path.join(REPO, "config", "data"), os.path.join(cfg, "data"))
+        p = os.path.join(cfg, "aftertreatment.yaml")
+        with open(p) as f:
+            text = f.read()
+        with open(p, "w") as f:
+            f.write(text.replace("soot_load_g_L: 2.0", "soot_load_g_L: 10.0", 1))
+        cls.runs = {}
+        for name, args in (("base", {}), ("soot", {"config": cfg}), ("warm", {"thermal": "false"})):
+            out = os.path.join(cls.tmp, name)
+            st = run_util.run_launch(LAUNCH, out, engine="1d", until=20.0, timeout=20.0, **args)
+            cls.runs[name] = (out, st)
+
+    def last(self, name, topic):
+        return messages(os.path.join(self.runs[name][0], "run.bag"), topic)[-1]
+
+    def test_back_pressure_raises_fuel(self):
+        for n, (_, st) in self.runs.items():
+            self.assertEqual(st["status"], "ok", (n, st))
+        a, b = self.last("base", "/engine/state"), self.last("soot", "/engine/state")
+        self.assertGreater(b.back_pressure_pa, a.back_pressure_pa + 300.0)
+        self.assertGreater(b.fuel_mass_kg, a.fuel_mass_kg * 1.0002)  # measured +0.06 %
+
+    def test_cold_coolant_raises_fuel(self):
+        a, w = self.last("base", "/engine/state"), self.last("warm", "/engine/state")
+        self.assertLess(a.coolant_temperature_k, 310.0)  # still cold after 20 s
+        self.assertEqual(w.coolant_temperature_k, 0.0)   # no cooling node: warm default used
+        self.assertGreater(a.fuel_mass_kg, w.fuel_mass_kg * 1.05)
 
 
 if __name__ == "__main__":

@@ -99,7 +99,7 @@ void VehicleParticipant::step(const ros::Time& t, double dt_s) {
   in.ambient_T_K = ambient_T_K_;
   if (cooling_) {
     in.has_fan_power = true;
-    in.fan_power_W = cooling_->at(t).fan_power_w;
+    in.fan_power_W = cooling_->at(t).fan_drive_power_w;  // crank side, incl. clutch slip
   }
   model_->step(dt_s, in);
   t_s_ = t_next;
