@@ -25,6 +25,9 @@
 //     i.e. at one rate and one group (the default) exactly the message stamped t_k (one macro step
 //     of delay, Jacobi), and for an earlier group its fresh value stamped t_{k+1}. Deterministic,
 //     independent of arrival order. The recorder (an observer) always reads by the Jacobi rule.
+//     A slow participant sees point samples of faster producers (no averaging over its step):
+//     where the mean over the step matters, use a cumulative output of the producer (e.g.
+//     fuel_mass_kg, nox_mass_kg) and take the difference between two steps.
 //  4. Groups (stepper param `order`): within base step k the stepper commands group 1, waits for
 //     all its DONE, then group 2, ... The recorder is in the last group.
 //  5. The participant answers DONE(k), or FINISHED(k) when finished() says it reached the end of
