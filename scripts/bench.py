@@ -10,6 +10,11 @@
                                     imposed, torque requested), FSM then TVD on the same trace:
                                     CPU/simulated of each, FSM/TVD cost, cumulative fuel difference
                                     (engine_1d_whtc --bench; default the whole 1800 s cycle)
+  scripts/twin bench ambient [--engines map,1d] [--until S] [--jobs N]  baseline_urban with the
+                                    aftertreatment and cooling nodes at 0, 25 and 40 degC, nodelets:
+                                    one table per engine (fuel, warm-up, fan energy, charge air,
+                                    light-off, engine-out and tailpipe NOx, balances, wall/sim);
+                                    N runs at a time (default 1: wall/sim undisturbed)
 Results: printed as a table and written to results/bench/<name>.json.
 """
 import argparse
@@ -137,14 +142,56 @@ def bench_1d(a):
     return 0 if len(rows) == 2 else 1
 
 
+def bench_ambient(a):
+    """Issue 10 acceptance: the baseline at 0, 25 and 40 degC with each engine (nodelets)."""
+    from concurrent.futures import ThreadPoolExecutor
+    engines = [e for e in a.engines.split(",") if e]
+    jobs = []
+    for engine in engines:
+        for amb in (0, 25, 40):
+            out = os.path.join(REPO, "results", "bench", "ambient_%s_%dC" % (engine, amb))
+            os.makedirs(os.path.dirname(out), exist_ok=True)
+            args = ["mode:=nodelets", "ambient:=%d" % amb, "engine:=" + engine, "timeout:=10"]
+            if a.until:
+                args.append("until:=%g" % a.until)
+            jobs.append(((engine, amb), out, args))
+    with ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
+        results = list(ex.map(lambda j: (j[0], run_scenario("baseline_urban", j[1], j[2])), jobs))
+    table = {}
+    cols = [("fuel_kg", "fuel [kg]", "%.3f"), ("fuel_l_per_100km", "L/100km", "%.2f"),
+            ("warmup_s", "warm-up [s]", "%.0f"), ("fan_kwh", "fan [kWh]", "%.3f"),
+            ("mean_charge_air_c", "charge air [°C]", "%.1f"), ("ats_lightoff_s", "ATS light-off [s]", "%.0f"),
+            ("nox_engine_out_g", "NOx engine-out [g]", "%.0f"), ("nox_tailpipe_g", "NOx tailpipe [g]", "%.1f"),
+            ("mean_back_pressure_kpa", "back-pressure [kPa]", "%.2f"),
+            ("cooling_balance_closure", "cooling balance", "%.1e"), ("ats_balance_closure", "ATS balance", "%.1e")]
+    for engine in engines:
+        print("\nbaseline_urban, %s engine, aftertreatment + cooling, nodelets" % engine)
+        print("| ambient | " + " | ".join(c[1] for c in cols) + " | wall/sim |")
+        print("|---" * (len(cols) + 2) + "|")
+        for (e, amb), s in results:
+            if e != engine:
+                continue
+            if s is None:
+                print("| %d °C | run failed |" % amb)
+                continue
+            table["%s_%d" % (e, amb)] = s
+            cells = [(c[2] % s[c[0]]) if c[0] in s else "-" for c in cols]
+            print("| %d °C | %s | %.4f |" % (amb, " | ".join(cells), s["wall_time_s"] / s["sim_time_s"]))
+    with open(os.path.join(REPO, "results", "bench", "ambient.json"), "w") as f:
+        json.dump(table, f, indent=2)
+    return 0 if all(s for _, s in results) else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine"])
+    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient"])
+    ap.add_argument("--engines", default="map,1d", help="ambient: engine models, comma-separated")
+    ap.add_argument("--jobs", type=int, default=1, help="ambient: runs at a time")
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     ap.add_argument("--duration", type=float, default=1800.0,
                     help="engine: WHTC seconds to run (default the whole 1800 s)")
     a = ap.parse_args()
-    return {"map": bench_map, "1d": bench_1d, "engine": bench_engine}[a.what](a)
+    return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient}[a.what](a)
 
 
 if __name__ == "__main__":
