@@ -220,7 +220,7 @@ class Failures(unittest.TestCase):
         vehicle then engine (Gauss-Seidel): the run completes, recorded every 10 ms."""
         cfg = self.config_copy("engine_map.yaml", lambda t: t + "\ncosim:\n  macro_step_s: 0.02\n")
         out = os.path.join(self.tmp, "mr")
-        st = run_util.run_launch(LAUNCH, out, until=5.0, config=cfg, order="[[vehicle], [engine]]",
+        st = run_util.run_launch(LAUNCH, out, until=5.0, config=cfg, order="[[vehicle], [engine], [aftertreatment, cooling]]",
                                  record_period=0.01)
         self.assertEqual(st["status"], "ok", st)
         self.assertEqual(st["steps"], 500)
