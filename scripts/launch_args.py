@@ -67,7 +67,7 @@ ARGS = {
     "cycle": existing("file", "config/data/cycles/vecto", ".vdri"),
     "cycle_file": existing("file"),
     "config": existing("dir"),
-    "architecture": choice("conventional"),
+    "architecture": choice("conventional", "p1_48v"),
     "thermal": choice("true", "false"),
     "order": lambda v, repo, config=None: v,  # Gauss-Seidel groups: checked by the stepper before step 0
 }

@@ -24,7 +24,7 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
   const int g = gs_.gear;
   // Gear load loss at the input speed referred to the engaged (or on-coming) gear.
   const double w_in = gs_.mode == DriveMode::Shifting ? v * k_[g] : gearboxInputSpeed(v, w);
-  r.T_eng = c.T_e;
+  r.T_eng = c.engine_on ? c.T_e : -std::fabs(c.T_e) * smoothSign(w);  // stopped: friction only
   r.T_em = c.T_em;
   const double wa = std::max(std::fabs(w), w_half);
   r.T_aux = c.P_aux * w / (wa * wa);

@@ -77,7 +77,7 @@ void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
 
 double VehicleModel::auxPower(const VehicleInputs& in) const {
   const auto& a = p_.aux;
-  return a.steering_pump_W + a.air_compressor_W + a.alternator_W +
+  return a.steering_pump_W + a.air_compressor_W + a.alternator_W + aux_payback_W_ +
          (in.has_fan_power ? in.fan_power_W : a.fan_default_W);
 }
 
@@ -87,16 +87,19 @@ void VehicleModel::bookAuxConsumers(double dE_aux_J, double P_aux_W, const Vehic
   const double per_W = dE_aux_J / P_aux_W;  // the step's aux work per watt of aux power [s]
   VehicleEnergy& e = out_.energy;
   e.fan_J += per_W * (in.has_fan_power ? in.fan_power_W : a.fan_default_W);
-  e.steering_J += per_W * a.steering_pump_W;
-  e.pneumatic_J += per_W * a.air_compressor_W;
+  const double P_def = a.steering_pump_W + a.air_compressor_W;
+  const double f = P_def > 0.0 ? 1.0 + aux_payback_W_ / P_def : 1.0;  // stop-start payback share
+  e.steering_J += per_W * a.steering_pump_W * f;
+  e.pneumatic_J += per_W * a.air_compressor_W * f;
+  if (aux_payback_W_ > 0.0) e.aux_deferred_J = std::max(0.0, e.aux_deferred_J - per_W * aux_payback_W_);
   e.electric_J += per_W * a.alternator_W;
 }
 
 const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   const double vals[] = {in.target_speed_m_s, in.target_accel_m_s2, in.road_grade,
                          in.engine_torque_Nm, in.engine_max_torque_Nm, in.engine_min_torque_Nm,
-                         in.em_torque_Nm, in.fan_power_W, in.ambient_T_K,
-                         in.accel_pedal_cmd, in.brake_pedal_cmd};
+                         in.em_torque_Nm, in.em_max_torque_Nm, in.friction_brake_force_N,
+                         in.fan_power_W, in.ambient_T_K, in.accel_pedal_cmd, in.brake_pedal_cmd};
   for (double x : vals)
     if (!std::isfinite(x)) throw ModelDivergence("vehicle", "inputs", "non-finite input");
   if (!(dt > 0.0)) throw ModelDivergence("vehicle", "dt", "must be > 0");
@@ -123,17 +126,24 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
     si.stopped_and_held = v_ == 0.0 && hold_;
     si.start_request = start_request_;
     target = shift_.decide(gs_, si);
+    // A stopped (or cranking) engine cannot drive the converter: stay in neutral until it runs.
+    if (!in.engine_on && gs_.mode == DriveMode::Neutral) target = gs_;
   }
   const int gear_before = gs_.gear;
   if (target != gs_) transition(target);
   out_.gear_changed = gs_.gear != gear_before;
 
-  // 2. Integrate the macro step with the inputs held.
+  // 2. Integrate the macro step with the inputs held. Stop-start debt of the steering pump and
+  // compressor: owed while the engine stands, repaid at up to their own power once it runs.
+  const double P_def = p_.aux.steering_pump_W + p_.aux.air_compressor_W;
+  aux_payback_W_ = in.engine_on ? std::min(P_def, out_.energy.aux_deferred_J / dt) : 0.0;
   StepConst c;
   c.T_e = in.engine_torque_Nm;
   c.T_em = in.em_torque_Nm;
   c.P_aux = auxPower(in);
-  c.F_brake = brake_force_;
+  c.F_brake = in.brake_override ? std::max(0.0, in.friction_brake_force_N) : brake_force_;
+  c.engine_on = in.engine_on;
+  out_.applied_brake_force_N = c.F_brake;
   c.grade = grade;
   c.rho = road_.airDensity(in.ambient_T_K);
   const double v_start = v_, aux_start_J = out_.energy.aux_J;
@@ -142,7 +152,11 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   if (!std::isfinite(v_) || !std::isfinite(w_))
     throw ModelDivergence("vehicle", "state", "speed became non-finite");
   t_since_shift_ += dt;
+  const double def_start_J = out_.energy.steering_J + out_.energy.pneumatic_J;
   bookAuxConsumers(out_.energy.aux_J - aux_start_J, c.P_aux, in);
+  if (!in.engine_on)  // what the standing pump and compressor did not get this step is owed
+    out_.energy.aux_deferred_J += std::max(
+        0.0, P_def * dt - (out_.energy.steering_J + out_.energy.pneumatic_J - def_start_J));
 
   // 3. Driver and idle governor at t + dt: pedals, brake force and torque request.
   evaluateDriver(dt, in);
@@ -174,11 +188,14 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
 void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   const auto& d = p_.driveline;
   const double grade = grade_profile_.empty() ? in.road_grade : grade_profile_(s_);
-  StepConst c{0.0, in.em_torque_Nm, auxPower(in), 0.0, grade, road_.airDensity(in.ambient_T_K)};
+  StepConst c{0.0, in.em_torque_Nm, auxPower(in), 0.0, grade, road_.airDensity(in.ambient_T_K), true};
   const Rates r = rates(v_, w_, c, 1);  // present loss torques (T_e = 0)
   const double T_min = in.engine_min_torque_Nm;
-  double T_max = std::max(in.engine_max_torque_Nm, T_min);
-  const double T_loss_crank = r.T_aux + r.T_drag - in.em_torque_Nm;
+  // The demand is the whole crank torque (engine + e-machine): the driver's full pedal asks both
+  // maxima; the split is the EMS's (hybrid) or all the engine's (baseline: em = 0).
+  const double T_max_total = in.engine_max_torque_Nm + std::max(0.0, in.em_max_torque_Nm);
+  double T_max = std::max(T_max_total, T_min);
+  const double T_loss_crank = r.T_aux + r.T_drag;
   const double F_drag_out = ia_r_ * (r.T_ret + r.T_axl);
   double M_eff = M_, F_min = 0.0, F_max = 0.0;
   const bool locked = gs_.mode == DriveMode::Locked || gs_.mode == DriveMode::Shifting;
@@ -201,7 +218,7 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
     F_min = k * (mu * (T_min - T_loss_crank) - T_side) - F_drag_out;
   } else {
     const double w_i = d.idle_speed_rad_s, w_t = v_ * k_[1];
-    const double T_idle = c.P_aux / w_i + r.T_drag - in.em_torque_Nm + tc_.pumpTorque(w_i, w_t);
+    const double T_idle = c.P_aux / w_i + r.T_drag + tc_.pumpTorque(w_i, w_t);
     if (gs_.mode == DriveMode::Converter) T_floor = std::clamp(T_idle, T_min, T_max);
     F_min = k * (tc_.turbineTorque(w_i, w_t) - T_side) - F_drag_out;
     F_max = std::max(F_max, F_min);
@@ -238,11 +255,12 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   const double T_load = r.T_aux + r.T_drag + (gs_.mode == DriveMode::Converter ? r.T_pump : 0.0);
   const auto& dp = p_.driver;
   double T_gov = T_load + dp.idle_kp_Nm_s * e + dp.idle_ki_Nm * idle_integral_;
+  if (!in.engine_on) T_gov = T_driver;  // stopped/cranking: no governor, integrator frozen
   if (T_gov > T_driver && dp.idle_ki_Nm > 0.0) {
     idle_integral_ = std::clamp(idle_integral_ + e * dt, -200.0 / dp.idle_ki_Nm, 400.0 / dp.idle_ki_Nm);
     T_gov = T_load + dp.idle_kp_Nm_s * e + dp.idle_ki_Nm * idle_integral_;
   }
-  double demand = std::clamp(std::max(T_driver, T_gov), T_min, std::max(in.engine_max_torque_Nm, T_min));
+  double demand = std::clamp(std::max(T_driver, T_gov), T_min, std::max(T_max_total, T_min));
   // TCU torque intervention in the inertia phase of an upshift: the engine gives up the torque
   // that the clutch would otherwise add by slowing the engine (smooth output torque).
   if (gs_.mode == DriveMode::Shifting && shift_slip0_ > 0.0 && p_.shift.shift_torque_intervention)
@@ -252,6 +270,9 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   out_.accel_pedal = accel;
   out_.brake_force_N = brake_force_;
   out_.stop_hold = hold_;
+  out_.start_request = start_request_;
+  out_.crank_to_wheel_ratio = gs_.mode == DriveMode::Locked
+      ? p_.driveline.gear_ratios[gs_.gear - 1] * p_.driveline.axle_ratio : 0.0;
 }
 
 }  // namespace hbt::vehicle

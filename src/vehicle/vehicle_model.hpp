@@ -70,6 +70,13 @@ struct VehicleInputs {
   double engine_max_torque_Nm = 0.0;  // engine full-load torque at its speed [Nm]
   double engine_min_torque_Nm = 0.0;  // engine motoring torque at its speed [Nm] (< 0)
   double em_torque_Nm = 0.0;          // P1 e-machine torque on the crank [Nm] (hybrid)
+  double em_max_torque_Nm = 0.0;      // its live (derated) motoring limit at the crank [Nm] (hybrid):
+                                      // the driver's full pedal asks engine + e-machine maximum
+  bool brake_override = false;        // hybrid: the EMS sets the friction brake of this step
+  double friction_brake_force_N = 0.0;  // ... to this force at the tyres [N] (regen took the rest)
+  bool engine_on = true;              // false: engine stopped/being cranked (hybrid stop-start):
+                                      // no idle governor, its torque is friction opposing ω_e,
+                                      // the gearbox stays in neutral until it runs again
   bool has_fan_power = false;         // true when the cooling node provides fan_power_W
   double fan_power_W = 0.0;           // fan shaft power [W] (may be < 0: windmilling)
   double ambient_T_K = 293.15;        // for the air density [K]
@@ -88,6 +95,11 @@ struct VehicleEnergy {
   // electric system (alternator). Booked as the consumer's share P_i/P_aux of each macro
   // step's aux work (all consumers see the same crank-speed factor, see auxPower()).
   double fan_J = 0.0, steering_J = 0.0, pneumatic_J = 0.0, electric_J = 0.0;
+  // Hybrid stop-start: while the engine is stopped the crank-driven steering pump and air
+  // compressor stand, but their demand (air used by doors and kneeling, steering) is not gone:
+  // it is deferred and paid back after the restart on top of their normal power (at most doubling
+  // it) until repaid. aux_deferred_J = the demand still owed [J] (>= 0, not part of aux_J).
+  double aux_deferred_J = 0.0;
   double retarder_J = 0.0, axle_loss_J = 0.0, shift_loss_J = 0.0;
   double rolling_J = 0.0, aero_J = 0.0, grade_J = 0.0, brake_J = 0.0;
   double wheel_J = 0.0;                                 // work at the wheel hubs
@@ -106,7 +118,11 @@ struct VehicleOutputs {
   double engine_torque_request_Nm = 0.0;  // for the engine (= crank demand - em_torque)
   double crank_torque_demand_Nm = 0.0;    // driver/idle-governor demand at the crank [Nm]
   double accel_pedal = 0.0, brake_pedal = 0.0;  // [0, 1]
-  double brake_force_N = 0.0;             // friction brake force applied next step [N]
+  double brake_force_N = 0.0;             // driver's brake force for the next step [N]
+  double applied_brake_force_N = 0.0;     // friction brake force applied in the last step [N]
+  double crank_to_wheel_ratio = 0.0;      // i_g i_a with a gear locked (torque path crank ->
+                                          // wheels closed), else 0 (converter, neutral, shift)
+  bool start_request = false;             // the driver wants to move (target speed > stop)
   double speed_m_s = 0.0, accel_m_s2 = 0.0, distance_m = 0.0, altitude_m = 0.0;
   double grade = 0.0;                     // rise/run at the vehicle's position [-]
   int gear = 0;                           // 0 = neutral
@@ -147,6 +163,7 @@ class VehicleModel {
  private:
   struct StepConst {  // held over one macro step
     double T_e, T_em, P_aux, F_brake, grade, rho;
+    bool engine_on = true;  // false: T_e acts as friction -|T_e| sgn(ω_e)
   };
   struct Rates {
     double T_eng = 0, T_em = 0, T_aux = 0, T_drag = 0, T_pump = 0, T_turb = 0, T_gload = 0;
@@ -185,6 +202,7 @@ class VehicleModel {
   GearState gs_;
   double T_in_est_ = 0.0, T_ax_est_ = 0.0;  // transmitted torques (loss evaluation)
   double brake_force_ = 0.0, accel_pedal_ = 0.0, idle_integral_ = 0.0;
+  double aux_payback_W_ = 0.0;  // extra steering + compressor power this step (stop-start debt)
   bool hold_ = false, start_request_ = false;
   double last_dv_ = 0.0;
   double s_target_ = 0.0, v_target_prev_ = 0.0;  // ∫ v_target dt (driver's distance reference)

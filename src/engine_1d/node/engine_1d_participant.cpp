@@ -21,7 +21,9 @@ void Engine1DParticipant::configure() {
   engine_ = std::make_unique<Engine1D>(p, pkg);
   speed_rad_s_ = units::rpmToRadps(700.0);
   engine_->reset(speed_rad_s_, 0.0, ambient_T_K_, 101325.0, coolant_T_K_);
-  command_ = &addInput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
+  bool hybrid = false;  // hybrid: the EMS's share of the demand (loops/ems), else the vehicle's
+  pnh_.param("loops/ems", hybrid, false);
+  command_ = &addInput<hybrid_bus_twin::EngineCommand>(hybrid ? "/ems/engine_command" : "/vehicle/engine_command");
   bool cooling = false, ats = false;
   pnh_.param("loops/cooling", cooling, false);
   pnh_.param("loops/aftertreatment", ats, false);

@@ -1,7 +1,8 @@
 // ROS bridge of the crank-angle-resolved 1D engine (engine_model:=1d): converts messages and
 // parameters, nothing else. Model: hbt::engine_1d::Engine1D (../engine_1d.hpp).
 //
-// Inputs  (stamped t_k): /vehicle/engine_command (imposed speed, torque request, ambient);
+// Inputs  (stamped t_k): /vehicle/engine_command (imposed speed, torque request, ambient;
+//                        /ems/engine_command in the hybrid, private parameter loops/ems);
 //                        /cooling/state (coolant -> friction, wall temperatures) and
 //                        /aftertreatment/state (back-pressure -> turbine-outlet boundary) when
 //                        loops/cooling and loops/aftertreatment are set (engine_ports.hpp).

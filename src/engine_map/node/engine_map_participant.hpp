@@ -1,7 +1,8 @@
 // ROS bridge of the map-based engine (engine_model:=map): converts messages and parameters,
 // nothing else. Model: hbt::engine_map::MapEngine (../map_engine.hpp).
 //
-// Inputs  (stamped t_k): /vehicle/engine_command (EngineCommand: imposed speed, torque request);
+// Inputs  (stamped t_k): /vehicle/engine_command (EngineCommand: imposed speed, torque request;
+//                        /ems/engine_command in the hybrid, private parameter loops/ems);
 //                        /cooling/state, /aftertreatment/state when loops/cooling, loops/aftertreatment.
 // Outputs (stamped t_k): /engine/state (EngineState), /engine/exhaust (ExhaustState),
 //                        /engine/heat (EngineHeat).

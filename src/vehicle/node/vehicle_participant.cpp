@@ -1,5 +1,6 @@
 #include "vehicle/node/vehicle_participant.hpp"
 
+#include <hybrid_bus_twin/DriverDemand.h>
 #include <hybrid_bus_twin/EngineCommand.h>
 #include <hybrid_bus_twin/VehicleState.h>
 #include <hybrid_bus_twin/VehicleToCooling.h>
@@ -69,8 +70,15 @@ void VehicleParticipant::configure() {
   bool cooling = false;
   pnh_.param("loops/cooling", cooling, false);
   if (cooling) cooling_ = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
+  bool hybrid = false;
+  pnh_.param("loops/ems", hybrid, false);
+  if (hybrid) {
+    ems_ = &addInput<hybrid_bus_twin::EmsCommand>("/ems/command");
+    em_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
+  }
   state_pub_ = addOutput<hybrid_bus_twin::VehicleState>("/vehicle/state");
-  command_pub_ = addOutput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
+  if (hybrid) demand_pub_ = addOutput<hybrid_bus_twin::DriverDemand>("/vehicle/driver_demand");
+  else command_pub_ = addOutput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
   cooling_pub_ = addOutput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
 }
 
@@ -101,6 +109,17 @@ void VehicleParticipant::step(const ros::Time& t, double dt_s) {
     in.has_fan_power = true;
     in.fan_power_W = cooling_->at(t).fan_drive_power_w;  // crank side, incl. clutch slip
   }
+  if (ems_) {  // the EMS's split for [t, t + dt]; the e-machine's torque of its step before
+    const auto& c = ems_->at(t);
+    const auto& m = em_->at(t);
+    in.em_torque_Nm = m.torque_nm;
+    in.em_max_torque_Nm = std::max(0.0, m.torque_max_nm);
+    in.engine_on = engine_on_ = c.engine_on;
+    in.brake_override = true;
+    in.friction_brake_force_N = c.friction_brake_request_nm / model_->params().chassis.tyre_radius_m;
+  }
+  last_engine_max_Nm_ = in.engine_max_torque_Nm;
+  last_engine_min_Nm_ = in.engine_min_torque_Nm;
   model_->step(dt_s, in);
   t_s_ = t_next;
 }
@@ -122,9 +141,12 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
   s.converter_locked = o.tc_locked;
   s.engine_speed_rad_s = o.engine_speed_rad_s;
   s.wheel_torque_request_nm = o.crank_torque_demand_Nm;
-  s.friction_brake_torque_nm = o.brake_force_N * model_->params().chassis.tyre_radius_m;
+  s.friction_brake_torque_nm = o.brake_force_N * model_->params().chassis.tyre_radius_m;  // driver's
+  s.friction_brake_applied_nm = o.applied_brake_force_N * model_->params().chassis.tyre_radius_m;
+  s.engine_on = engine_on_;
   s.aux_power_w = o.aux_power_W;
   const VehicleEnergy& en = o.energy;
+  s.aux_deferred_j = en.aux_deferred_J;
   s.engine_work_j = en.engine_J;
   s.em_work_j = en.em_J;
   s.aux_work_j = en.aux_J;
@@ -148,14 +170,36 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
   s.mission_finished = ts >= profile_.duration_s() - 1e-9;
   state_pub_.publish(s);
 
-  hybrid_bus_twin::EngineCommand c;
-  c.header.stamp = t;
-  c.engine_speed_rad_s = o.engine_speed_rad_s;
-  c.torque_request_nm = o.engine_torque_request_Nm;
-  c.engine_on = true;
-  c.ambient_temperature_k = ambient_T_K_;
-  c.ambient_pressure_pa = model_->params().chassis.ambient_pressure_Pa;
-  command_pub_.publish(c);
+  const double r_tyre = model_->params().chassis.tyre_radius_m;
+  if (ems_) {
+    hybrid_bus_twin::DriverDemand d;
+    d.header.stamp = t;
+    d.crank_torque_request_nm = o.crank_torque_demand_Nm;
+    d.wheel_brake_request_nm = o.brake_force_N * r_tyre;
+    d.engine_speed_rad_s = o.engine_speed_rad_s;
+    d.vehicle_speed_m_s = o.speed_m_s;
+    d.gear = o.gear;
+    d.converter_locked = o.tc_locked;
+    d.crank_to_wheel_ratio = o.crank_to_wheel_ratio;
+    d.tyre_radius_m = r_tyre;
+    d.stopped = o.speed_m_s == 0.0 && o.stop_hold && o.mode == DriveMode::Neutral;
+    d.start_request = o.start_request;
+    d.accelerator_pedal = o.accel_pedal;
+    d.engine_max_torque_nm = last_engine_max_Nm_;
+    d.engine_min_torque_nm = last_engine_min_Nm_;
+    d.ambient_temperature_k = ambient_T_K_;
+    d.ambient_pressure_pa = model_->params().chassis.ambient_pressure_Pa;
+    demand_pub_.publish(d);
+  } else {
+    hybrid_bus_twin::EngineCommand c;
+    c.header.stamp = t;
+    c.engine_speed_rad_s = o.engine_speed_rad_s;
+    c.torque_request_nm = o.engine_torque_request_Nm;
+    c.engine_on = true;
+    c.ambient_temperature_k = ambient_T_K_;
+    c.ambient_pressure_pa = model_->params().chassis.ambient_pressure_Pa;
+    command_pub_.publish(c);
+  }
 
   hybrid_bus_twin::VehicleToCooling vc;
   vc.header.stamp = t;

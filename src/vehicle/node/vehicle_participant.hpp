@@ -5,8 +5,12 @@
 // Inputs  (stamped t_k): /engine/state (EngineState: brake torque, torque limits);
 //                        /cooling/state (CoolingState: fan shaft power on the crank) when the
 //                        private parameter loops/cooling is set (else aux/fan_default_W).
-// Outputs (stamped t_k): /vehicle/state (VehicleState), /vehicle/engine_command (EngineCommand),
-//                        /vehicle/to_cooling (VehicleToCooling).
+//                        Hybrid (private parameter loops/ems): /ems/command (EmsCommand: engine
+//                        on/off, friction brake after regeneration) and /emachine/state
+//                        (EMachineState: actual crank torque, live motoring limit).
+// Outputs (stamped t_k): /vehicle/state (VehicleState), /vehicle/to_cooling (VehicleToCooling),
+//                        baseline: /vehicle/engine_command (EngineCommand);
+//                        hybrid: /vehicle/driver_demand (DriverDemand) for the EMS instead.
 // Parameters: private namespace = config/vehicle.yaml, private group `mission/` =
 // config/mission.yaml (its vehicle/* road-load keys are overridden by the vehicle model's mass,
 // drag area, rolling resistance and rotating mass so that the profile is planned for this bus);
@@ -15,6 +19,8 @@
 // <out_dir>/stops.csv (stop positions and times); the mission duration in its ANNOUNCE.
 #pragma once
 #include <hybrid_bus_twin/CoolingState.h>
+#include <hybrid_bus_twin/EMachineState.h>
+#include <hybrid_bus_twin/EmsCommand.h>
 #include <hybrid_bus_twin/EngineState.h>
 
 #include <memory>
@@ -41,7 +47,11 @@ class VehicleParticipant : public cosim::Participant {
   mission::MissionProfile profile_;
   cosim::Input<hybrid_bus_twin::EngineState>* engine_ = nullptr;
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // loops/cooling only
-  ros::Publisher state_pub_, command_pub_, cooling_pub_;
+  cosim::Input<hybrid_bus_twin::EmsCommand>* ems_ = nullptr;         // loops/ems (hybrid) only
+  cosim::Input<hybrid_bus_twin::EMachineState>* em_ = nullptr;       // loops/ems (hybrid) only
+  ros::Publisher state_pub_, command_pub_, cooling_pub_, demand_pub_;
+  double last_engine_max_Nm_ = 0.0, last_engine_min_Nm_ = 0.0;
+  bool engine_on_ = true;
   double t_s_ = 0.0, ambient_T_K_ = 298.15;
 };
 

@@ -1,0 +1,106 @@
+#include "ems/node/ems_participant.hpp"
+
+#include <hybrid_bus_twin/EmsCommand.h>
+#include <hybrid_bus_twin/EngineCommand.h>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "common/yaml_params.hpp"
+#include "cosim/param_loader.hpp"
+
+namespace hbt::ems {
+
+void EmsParticipant::configure() {
+  EmsParams p;
+  ParamSet ps;
+  p.declare(ps);
+  cosim::applyRosParams(pnh_, ps, configFile(), {"engine_model_config", "stop_start_supported"});
+  p.validate(configFile());
+  // The controller's engine model: the map engine's YAML, checked on its own (errors name it).
+  std::string engine_file, pkg;
+  pnh_.param<std::string>("engine_model_config", engine_file, "config/engine_map.yaml");
+  nh_.param<std::string>("/scenario/package_dir", pkg, ".");
+  engine_map::MapEngineParams mp;
+  ParamSet mps;
+  mp.declare(mps);
+  applyParams(mps, readYamlParams(cosim::resolvePackagePath(nh_, engine_file)), {"cosim/"});
+  fuel_ = std::make_unique<MapFuelModel>(std::make_unique<engine_map::MapEngine>(mp, pkg));
+  bool supported = true;
+  pnh_.param("stop_start_supported", supported, true);
+  model_ = std::make_unique<EmsModel>(p, *fuel_, supported);
+  double ambient_c = 25.0;
+  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
+  ambient_T_K_ = units::celsiusToK(ambient_c);
+
+  demand_ = &addInput<hybrid_bus_twin::DriverDemand>("/vehicle/driver_demand");
+  em_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
+  battery_ = &addInput<hybrid_bus_twin::BatteryState>("/battery/state");
+  bool cooling = false, ats = false;
+  pnh_.param("loops/cooling", cooling, false);
+  pnh_.param("loops/aftertreatment", ats, false);
+  if (cooling) cooling_ = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
+  if (ats) ats_ = &addInput<hybrid_bus_twin::AftertreatmentState>("/aftertreatment/state");
+  command_pub_ = addOutput<hybrid_bus_twin::EmsCommand>("/ems/command");
+  engine_pub_ = addOutput<hybrid_bus_twin::EngineCommand>("/ems/engine_command");
+  last_demand_.ambient_temperature_k = ambient_T_K_;
+  last_demand_.ambient_pressure_pa = ambient_p_Pa_;
+}
+
+void EmsParticipant::step(const ros::Time& t, double dt_s) {
+  const auto& d = demand_->at(t);
+  const auto& m = em_->at(t);
+  const auto& b = battery_->at(t);
+  EmsInputs in;
+  in.crank_torque_demand_Nm = d.crank_torque_request_nm;
+  in.wheel_brake_demand_Nm = d.wheel_brake_request_nm;
+  in.engine_speed_rad_s = d.engine_speed_rad_s;
+  in.crank_to_wheel_ratio = d.crank_to_wheel_ratio;
+  in.stopped = d.stopped;
+  in.start_request = d.start_request;
+  in.engine_max_torque_Nm = d.engine_max_torque_nm;
+  in.engine_min_torque_Nm = d.engine_min_torque_nm;
+  in.em_max_torque_Nm = m.torque_max_nm;
+  in.em_min_torque_Nm = m.torque_min_nm;
+  in.soc = b.soc;
+  in.battery_T_K = b.cell_temperature_k;
+  in.discharge_limit_W = b.discharge_power_limit_w;
+  in.charge_limit_W = b.charge_power_limit_w;
+  if (cooling_) in.coolant_T_K = cooling_->at(t).coolant_ht_temperature_k;
+  if (ats_) in.scr_T_K = ats_->at(t).scr_temperature_k;
+  model_->step(dt_s, in);
+  last_demand_ = d;
+}
+
+void EmsParticipant::publishOutputs(const ros::Time& t) {
+  const EmsDecision& e = model_->decision();
+  hybrid_bus_twin::EmsCommand c;
+  c.header.stamp = t;
+  c.engine_torque_request_nm = e.engine_torque_request_Nm;
+  c.em_torque_request_nm = e.em_torque_request_Nm;
+  c.friction_brake_request_nm = e.friction_brake_Nm;
+  c.engine_on = e.engine_on;
+  c.mode = static_cast<uint8_t>(e.mode);
+  c.reason = static_cast<uint8_t>(e.reason);
+  c.engine_speed_rad_s = last_demand_.engine_speed_rad_s;
+  c.ambient_temperature_k = last_demand_.ambient_temperature_k;
+  c.equivalence_factor = e.equivalence_factor;
+  c.cost_w = e.cost_W;
+  c.warm = e.warm;
+  c.engine_stops = e.engine_stops;
+  c.engine_starts = e.engine_starts;
+  c.stopped_time_s = e.stopped_time_s;
+  c.cranking_time_s = e.cranking_time_s;
+  c.warmup_inhibit_time_s = e.warmup_inhibit_time_s;
+  command_pub_.publish(c);
+
+  hybrid_bus_twin::EngineCommand ec;
+  ec.header.stamp = t;
+  ec.engine_speed_rad_s = last_demand_.engine_speed_rad_s;
+  ec.torque_request_nm = e.engine_torque_request_Nm;
+  ec.engine_on = e.engine_on;
+  ec.ambient_temperature_k = last_demand_.ambient_temperature_k;
+  ec.ambient_pressure_pa = last_demand_.ambient_pressure_pa;
+  engine_pub_.publish(ec);
+}
+
+}  // namespace hbt::ems

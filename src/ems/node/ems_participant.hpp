@@ -1,0 +1,61 @@
+// ROS bridge of the energy manager (hybrid only): converts messages and parameters, nothing else.
+// Model: hbt::ems::EmsModel (../ems_model.hpp); its engine model is the VECTO map engine's steady
+// fuel map (config/engine_map.yaml, as a real EMS carries a calibrated map whatever the plant is).
+//
+// Sits in the second Gauss-Seidel group (vehicle -> EMS -> engine, e-machine -> battery):
+// Inputs: /vehicle/driver_demand (DriverDemand, fresh: stamped t_k + P, the demand for the next
+//         step), /emachine/state (live torque limits), /battery/state (SOC, T, power limits),
+//         /cooling/state (HT coolant) and /aftertreatment/state (SCR brick) when loops/cooling,
+//         loops/aftertreatment are set (else the engine and ATS count as warm).
+// Outputs (stamped t_k + P): /ems/command (EmsCommand: split, mode and reason, for the e-machine,
+//         the vehicle and the bag), /ems/engine_command (EngineCommand for the engine node).
+// Parameters: private namespace = config/ems.yaml; engine_model_config (the map engine YAML);
+//         stop_start_supported (false with the 1D engine: it cannot be stopped and cranked).
+#pragma once
+#include <hybrid_bus_twin/AftertreatmentState.h>
+#include <hybrid_bus_twin/BatteryState.h>
+#include <hybrid_bus_twin/CoolingState.h>
+#include <hybrid_bus_twin/DriverDemand.h>
+#include <hybrid_bus_twin/EMachineState.h>
+
+#include <memory>
+
+#include "cosim/participant.hpp"
+#include "ems/ems_model.hpp"
+#include "engine_map/map_engine.hpp"
+
+namespace hbt::ems {
+
+/// The controller's engine model over the VECTO map engine (steady fuel map).
+class MapFuelModel : public FuelModel {
+ public:
+  explicit MapFuelModel(std::unique_ptr<engine_map::MapEngine> e) : e_(std::move(e)) {}
+  double fuelRate_kg_s(double w, double T) const override { return e_->steadyFuel(w, T); }
+
+ private:
+  std::unique_ptr<engine_map::MapEngine> e_;
+};
+
+class EmsParticipant : public cosim::Participant {
+ public:
+  EmsParticipant(ros::NodeHandle nh, ros::NodeHandle pnh) : Participant(nh, pnh) {}
+
+ protected:
+  void configure() override;
+  void publishOutputs(const ros::Time& t) override;
+  void step(const ros::Time& t, double dt_s) override;
+
+ private:
+  std::unique_ptr<MapFuelModel> fuel_;
+  std::unique_ptr<EmsModel> model_;
+  cosim::Input<hybrid_bus_twin::DriverDemand>* demand_ = nullptr;
+  cosim::Input<hybrid_bus_twin::EMachineState>* em_ = nullptr;
+  cosim::Input<hybrid_bus_twin::BatteryState>* battery_ = nullptr;
+  cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;
+  cosim::Input<hybrid_bus_twin::AftertreatmentState>* ats_ = nullptr;
+  ros::Publisher command_pub_, engine_pub_;
+  hybrid_bus_twin::DriverDemand last_demand_;
+  double ambient_T_K_ = 298.15, ambient_p_Pa_ = 101325.0;
+};
+
+}  // namespace hbt::ems
