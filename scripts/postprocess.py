@@ -109,12 +109,14 @@ def stops_served(veh, stops_csv):
 def summarise(scenario, args, status, data, stops_csv):
     veh = data.get("/vehicle/state")
     eng = data.get("/engine/state")
+    # defaults as in launch/include/urban.launch (the scenario file sets the architecture)
+    arch = args.get("architecture") or ("p1_48v" if scenario == "hybrid_urban" else "conventional")
     s = {
         "scenario": scenario,
-        "architecture": args.get("architecture", "conventional"),
+        "architecture": arch,
         "engine_model": args.get("engine", "map"),
         "ambient_c": float(args.get("ambient", 25.0)),
-        "aux_set": args.get("aux", "vecto_p1_example"),
+        "aux_set": args.get("aux") or ("vecto_p1_example_48v" if arch == "p1_48v" else "vecto_p1_example"),
         "macro_step_s": status["macro_step_s"],
         "sim_time_s": status["sim_time_s"],
         "wall_time_s": status["wall_time_s"],

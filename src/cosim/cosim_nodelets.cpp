@@ -8,9 +8,12 @@ HBT_PARTICIPANT_NODELET(hbt::cosim::Recorder, RecorderNodelet)
 namespace hbt::nodelets {
 class StepperNodelet : public nodelet::Nodelet {
   void onInit() override {
-    stepper_ = std::make_unique<hbt::cosim::Stepper>(getNodeHandle(), getPrivateNodeHandle());
+    queue_ = hbt::cosim::LockstepQueue::acquire();
+    stepper_ = std::make_unique<hbt::cosim::Stepper>(queue_->bind(getNodeHandle()),
+                                                     queue_->bind(getPrivateNodeHandle()));
     stepper_->start();
   }
+  std::shared_ptr<hbt::cosim::LockstepQueue> queue_;  // declared first: outlives the stepper
   std::unique_ptr<hbt::cosim::Stepper> stepper_;
 };
 }  // namespace hbt::nodelets

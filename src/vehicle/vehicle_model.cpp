@@ -181,6 +181,8 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
     out_.tc_pump_torque_Nm = out_.tc_turbine_torque_Nm = 0.0;
   }
   out_.aux_power_W = c.P_aux;
+  out_.dcdc_input_power_W = p_.aux.electric_dcdc_W / p_.aux.dcdc_efficiency;
+  out_.energy.dcdc_J += out_.dcdc_input_power_W * dt;
   out_.energy.kinetic_J = kineticEnergy();
   return out_;
 }

@@ -100,6 +100,8 @@ struct VehicleEnergy {
   // it is deferred and paid back after the restart on top of their normal power (at most doubling
   // it) until repaid. aux_deferred_J = the demand still owed [J] (>= 0, not part of aux_J).
   double aux_deferred_J = 0.0;
+  double dcdc_J = 0.0;  // electric energy of the 24 V consumers drawn via the DC/DC [J] (battery
+                        // side; electric, not part of the crank balance below)
   double retarder_J = 0.0, axle_loss_J = 0.0, shift_loss_J = 0.0;
   double rolling_J = 0.0, aero_J = 0.0, grade_J = 0.0, brake_J = 0.0;
   double wheel_J = 0.0;                                 // work at the wheel hubs
@@ -132,6 +134,7 @@ struct VehicleOutputs {
   double tc_pump_torque_Nm = 0.0, tc_turbine_torque_Nm = 0.0;
   double gearbox_input_speed_rad_s = 0.0;
   double aux_power_W = 0.0;               // mechanical aux incl. fan [W]
+  double dcdc_input_power_W = 0.0;        // 48 V DC/DC input for the 24 V consumers [W] (hybrid)
   bool gear_changed = false;              // a gear change happened at the start of this step
   bool stop_hold = false;
   VehicleEnergy energy;

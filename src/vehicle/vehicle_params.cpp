@@ -82,6 +82,8 @@ void AuxParams::declare(ParamSet& ps) {
   ps.add("air_compressor_W", air_compressor_W, "W", 0.0, 2e4, "mechanical power");
   ps.add("alternator_W", alternator_W, "W", 0.0, 2e4, "mechanical power");
   ps.add("fan_default_W", fan_default_W, "W", -1e4, 5e4, "fan power without cooling node");
+  ps.add("electric_dcdc_W", electric_dcdc_W, "W", 0.0, 2e4, "24 V consumers fed by the 48 V DC/DC (hybrid)");
+  ps.add("dcdc_efficiency", dcdc_efficiency, "-", 0.5, 1.0, "48 V -> 24 V DC/DC efficiency");
 }
 
 void VehicleParams::validate(const std::string& file) const {

@@ -81,6 +81,11 @@ struct AuxParams {
   double air_compressor_W = 1500.0;       // mechanical, constant (documented estimate)
   double alternator_W = 2500.0;           // mechanical input, constant (1.75 kW el. / 0.7)
   double fan_default_W = 800.0;           // used until the cooling node provides fan power
+  // Hybrid: the 24 V consumers fed from the 48 V battery through a DC/DC converter instead of
+  // the alternator (not on the crank): electric power [W] and converter efficiency [-]. The
+  // battery draws electric_dcdc_W / dcdc_efficiency (VehicleOutputs::dcdc_input_power_W).
+  double electric_dcdc_W = 0.0;
+  double dcdc_efficiency = 0.95;
   /// Registers the keys (without prefix) = the `aux:` group of an auxiliary set
   /// (config/aux/<set>.yaml, selected with the launch argument aux:=<set>).
   void declare(ParamSet& ps);

@@ -147,6 +147,8 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
   s.aux_power_w = o.aux_power_W;
   const VehicleEnergy& en = o.energy;
   s.aux_deferred_j = en.aux_deferred_J;
+  s.dcdc_power_w = o.dcdc_input_power_W;
+  s.dcdc_energy_j = en.dcdc_J;
   s.engine_work_j = en.engine_J;
   s.em_work_j = en.em_J;
   s.aux_work_j = en.aux_J;
