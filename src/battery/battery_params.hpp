@@ -1,0 +1,78 @@
+// Parameters of the 48 V Li-ion pack (cells, pack layout, operating limits, air cooling). SI
+// units. Keys (group/key) = config/battery.yaml, where every value, its source and the sizing of
+// the pack are documented.
+#pragma once
+#include <string>
+
+#include "common/params.hpp"
+#include "common/units.hpp"
+
+namespace hbt::battery {
+
+/// Pack layout and initial state.
+struct PackParams {
+  int cells_in_series = 13;       // Ns: 13 x 4.2 V = 54.6 V at full charge (< 60 V, 48 V class)
+  int cells_in_parallel = 7;      // Np: sized for ~19 kW discharge at the minimum voltage
+  double initial_soc = 0.5;       // [-] SPEC §6
+};
+
+/// One cell: the 1-RC equivalent-circuit table and the cell's ratings.
+struct CellParams {
+  /// CSV (long format: SOC [-], T [K], OCV [V], R0 [Ohm], R1 [Ohm], tau1 [s]) on a full SOC x T
+  /// grid. Relative paths: against the working directory (tools, tests) or the package root
+  /// (the node, cosim::resolvePackagePath).
+  std::string table_file = "../shared/data/battery/kokam_27Ah_mathworks_example/ecm_1RC_SOC_T_lookup.csv";
+  double capacity_Ah = 27.0;
+  double max_voltage_V = 4.2;             // charge-voltage limit (terminal)
+  double min_voltage_V = 3.0;             // discharge cut-off (terminal)
+  double max_discharge_current_A = 135.0; // 5C (assumption, battery.yaml)
+  double max_charge_current_A = 81.0;     // 3C (assumption, battery.yaml)
+  double mass_kg = 0.554;
+  double cp_J_kgK = 1040.0;
+  double cooled_area_m2 = 0.1019;         // both faces of the pouch
+};
+
+/// Derating of the current limits (and so of the power limits) with SOC and temperature.
+struct LimitParams {
+  double soc_min = 0.20;                  // usable window for the power limits
+  double soc_max = 0.80;
+  double soc_taper = 0.05;                // limits ramp from 0 at the window edge to full this far inside
+  double charge_zero_K = units::celsiusToK(-10.0);   // no charging at or below
+  double charge_full_K = units::celsiusToK(15.0);    // full charge current at or above
+  double hot_derate_start_K = units::celsiusToK(50.0);  // both directions derate above ...
+  double max_temperature_K = units::celsiusToK(60.0);   // ... to zero at this hard limit
+  double horizon_s = 0.01;                // step length the published limits are computed for
+};
+
+/// Lumped air-cooled thermal model.
+struct ThermalParams {
+  double h_W_m2K = 15.0;                  // cell surface -> cooling air
+  double extra_heat_capacity_J_K = 0.0;   // housing, busbars, frames lumped with the cells
+};
+
+/// External DC loads on the pack besides the e-machine (used by the participant only).
+struct LoadParams {
+  double dcdc_power_W = 0.0;              // constant 48 V -> 24 V DC/DC load (0: 24 V on the alternator)
+};
+
+struct NumericsParams {
+  double min_temperature_K = 200.0;       // cell temperature outside [min, max] = divergence
+  double max_temperature_K = 400.0;
+};
+
+struct BatteryParams {
+  PackParams pack;
+  CellParams cell;
+  LimitParams limits;
+  ThermalParams thermal;
+  LoadParams loads;
+  NumericsParams numerics;
+  /// Registers every parameter as "<group>/<key>" (groups pack, cell, limits, thermal, loads,
+  /// numerics) = config/battery.yaml.
+  void declare(ParamSet& ps);
+  /// Cross-field checks (48 V class, voltage window, SOC window, derating temperatures). Throws
+  /// InputError(file, key). The table-dependent checks are in BatteryModel's constructor.
+  void validate(const std::string& file = "(battery parameters)") const;
+};
+
+}  // namespace hbt::battery

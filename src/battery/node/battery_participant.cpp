@@ -1,0 +1,74 @@
+#include "battery/node/battery_participant.hpp"
+
+#include <hybrid_bus_twin/BatteryState.h>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "cosim/param_loader.hpp"
+
+namespace hbt::battery {
+
+void BatteryParticipant::configure() {
+  BatteryParams p;
+  ParamSet ps;
+  p.declare(ps);
+  cosim::applyRosParams(pnh_, ps, configFile());
+  p.cell.table_file = cosim::resolvePackagePath(nh_, p.cell.table_file);
+  double ambient_c = 25.0;
+  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
+  if (!(ambient_c > -60.0 && ambient_c < 60.0))
+    throw InputError("scenario (launch argument)", "ambient_temperature_c", "must be in (-60, 60) degC");
+  ambient_T_K_ = units::celsiusToK(ambient_c);
+  dcdc_power_W_ = p.loads.dcdc_power_W;
+  model_ = std::make_unique<BatteryModel>(p, configFile());
+  model_->reset(ambient_T_K_);  // cold start: cells at ambient, SOC = pack/initial_soc
+  emachine_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
+  state_pub_ = addOutput<hybrid_bus_twin::BatteryState>("/battery/state");
+}
+
+void BatteryParticipant::step(const ros::Time& t, double dt_s) {
+  const auto& e = emachine_->at(t);
+  BatteryInputs in;
+  in.power_request_W = e.electrical_power_w + dcdc_power_W_;
+  in.air_T_K = ambient_T_K_;
+  model_->step(dt_s, in);
+}
+
+void BatteryParticipant::publishOutputs(const ros::Time& t) {
+  const BatteryOutputs& o = model_->outputs();
+  hybrid_bus_twin::BatteryState s;
+  s.header.stamp = t;
+  s.terminal_voltage_v = o.terminal_voltage_V;
+  s.current_a = o.current_A;
+  s.soc = o.soc;
+  s.cell_temperature_k = o.cell_T_K;
+  s.discharge_power_limit_w = o.discharge_power_limit_W;
+  s.charge_power_limit_w = o.charge_power_limit_W;
+  s.loss_power_w = o.loss_power_W;
+  s.ocv_v = o.ocv_V;
+  s.rc_voltage_v = o.rc_voltage_V;
+  s.power_w = o.power_W;
+  s.request_w = o.request_W;
+  s.unmet_power_w = o.unmet_power_W;
+  s.request_limited = o.request_limited;
+  s.dcdc_power_w = dcdc_power_W_;
+  s.heat_power_w = o.loss_power_W;
+  s.heat_to_air_w = o.heat_to_air_W;
+  s.discharge_current_limit_a = o.discharge_current_limit_A;
+  s.charge_current_limit_a = o.charge_current_limit_A;
+  s.chemical_energy_j = o.chemical_energy_J;
+  s.terminal_energy_j = o.terminal_energy_J;
+  s.loss_energy_j = o.loss_energy_J;
+  s.ohmic_loss_j = o.ohmic_loss_J;
+  s.rc_loss_j = o.rc_loss_J;
+  s.heat_to_air_j = o.heat_to_air_J;
+  s.stored_heat_change_j = o.stored_heat_change_J;
+  s.rc_stored_energy_change_j = o.rc_stored_energy_change_J;
+  s.energy_residual_j = o.energy_residual_J;
+  s.unmet_energy_j = o.unmet_energy_J;
+  s.charge_throughput_ah = o.charge_throughput_Ah;
+  s.limited_time_s = o.limited_time_s;
+  state_pub_.publish(s);
+}
+
+}  // namespace hbt::battery

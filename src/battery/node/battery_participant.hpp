@@ -1,0 +1,44 @@
+// ROS bridge of the 48 V battery: converts messages and parameters, nothing else. Model:
+// hbt::battery::BatteryModel (../battery_model.hpp).
+//
+// Input  (held-value rule, cosim/participant.hpp): /emachine/state (EMachineState:
+//        electrical_power_w = DC power drawn from the battery [W], < 0 charging). The battery
+//        runs at the e-machine's macro step (0.01 s) in a later Gauss-Seidel group: at step
+//        t_k -> t_k + P it reads the e-machine's message stamped t_k + P, i.e. the DC power of the
+//        e-machine's own step [t_k, t_k + P], and books exactly that energy (V_t I = P over the
+//        step). In the same group (Jacobi) it would book the previous step's power instead.
+//        The terminal power request is electrical_power_w + loads/dcdc_power_W (YAML, default 0).
+// Output (stamped t_k + P): /battery/state (BatteryState): terminal voltage, current, SOC, cell
+//        temperature, power limits for the next step, losses, cumulative energy bookkeeping.
+//        A request beyond the power limits is delivered at the limit (request_limited,
+//        unmet_power_w); the EMS is expected to respect discharge/charge_power_limit_w.
+// Parameters: private namespace = config/battery.yaml (cell/table_file resolved against the
+// package root, cosim::resolvePackagePath); /scenario/ambient_temperature_c = the air around the
+// pack, constant (initial state: cells at ambient, cold start; SOC = pack/initial_soc).
+#pragma once
+#include <hybrid_bus_twin/EMachineState.h>
+
+#include <memory>
+
+#include "battery/battery_model.hpp"
+#include "cosim/participant.hpp"
+
+namespace hbt::battery {
+
+class BatteryParticipant : public cosim::Participant {
+ public:
+  BatteryParticipant(ros::NodeHandle nh, ros::NodeHandle pnh) : Participant(nh, pnh) {}
+
+ protected:
+  void configure() override;
+  void publishOutputs(const ros::Time& t) override;
+  void step(const ros::Time& t, double dt_s) override;
+
+ private:
+  std::unique_ptr<BatteryModel> model_;
+  cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;
+  ros::Publisher state_pub_;
+  double ambient_T_K_ = 298.15, dcdc_power_W_ = 0.0;
+};
+
+}  // namespace hbt::battery
