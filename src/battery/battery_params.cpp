@@ -40,8 +40,6 @@ void BatteryParams::declare(ParamSet& ps) {
   ps.add("extra_heat_capacity_J_K", thermal.extra_heat_capacity_J_K, "J/K", 0.0, 1e7,
          "non-cell thermal mass lumped with the cells");
 
-  ps.setPrefix("loads/");
-  ps.add("dcdc_power_W", loads.dcdc_power_W, "W", 0.0, 1e4, "constant DC/DC load on the pack");
 
   ps.setPrefix("numerics/");
   ps.add("min_temperature_K", numerics.min_temperature_K, "K", 100.0, 300.0, "divergence bound");

@@ -50,11 +50,6 @@ struct ThermalParams {
   double extra_heat_capacity_J_K = 0.0;   // housing, busbars, frames lumped with the cells
 };
 
-/// External DC loads on the pack besides the e-machine (used by the participant only).
-struct LoadParams {
-  double dcdc_power_W = 0.0;              // constant 48 V -> 24 V DC/DC load (0: 24 V on the alternator)
-};
-
 struct NumericsParams {
   double min_temperature_K = 200.0;       // cell temperature outside [min, max] = divergence
   double max_temperature_K = 400.0;
@@ -65,9 +60,8 @@ struct BatteryParams {
   CellParams cell;
   LimitParams limits;
   ThermalParams thermal;
-  LoadParams loads;
   NumericsParams numerics;
-  /// Registers every parameter as "<group>/<key>" (groups pack, cell, limits, thermal, loads,
+  /// Registers every parameter as "<group>/<key>" (groups pack, cell, limits, thermal,
   /// numerics) = config/battery.yaml.
   void declare(ParamSet& ps);
   /// Cross-field checks (48 V class, voltage window, SOC window, derating temperatures). Throws

@@ -19,16 +19,17 @@ void BatteryParticipant::configure() {
   if (!(ambient_c > -60.0 && ambient_c < 60.0))
     throw InputError("scenario (launch argument)", "ambient_temperature_c", "must be in (-60, 60) degC");
   ambient_T_K_ = units::celsiusToK(ambient_c);
-  dcdc_power_W_ = p.loads.dcdc_power_W;
   model_ = std::make_unique<BatteryModel>(p, configFile());
   model_->reset(ambient_T_K_);  // cold start: cells at ambient, SOC = pack/initial_soc
   emachine_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
+  vehicle_ = &addInput<hybrid_bus_twin::VehicleState>("/vehicle/state");
   state_pub_ = addOutput<hybrid_bus_twin::BatteryState>("/battery/state");
 }
 
 void BatteryParticipant::step(const ros::Time& t, double dt_s) {
   const auto& e = emachine_->at(t);
   BatteryInputs in;
+  dcdc_power_W_ = vehicle_->at(t).dcdc_power_w;
   in.power_request_W = e.electrical_power_w + dcdc_power_W_;
   in.air_T_K = ambient_T_K_;
   model_->step(dt_s, in);

@@ -7,7 +7,8 @@
 //        t_k -> t_k + P it reads the e-machine's message stamped t_k + P, i.e. the DC power of the
 //        e-machine's own step [t_k, t_k + P], and books exactly that energy (V_t I = P over the
 //        step). In the same group (Jacobi) it would book the previous step's power instead.
-//        The terminal power request is electrical_power_w + loads/dcdc_power_W (YAML, default 0).
+//        The terminal power request is electrical_power_w + the vehicle's DC/DC input for the
+//        24 V consumers (/vehicle/state dcdc_power_w, its auxiliary set; group 1, fresh).
 // Output (stamped t_k + P): /battery/state (BatteryState): terminal voltage, current, SOC, cell
 //        temperature, power limits for the next step, losses, cumulative energy bookkeeping.
 //        A request beyond the power limits is delivered at the limit (request_limited,
@@ -17,6 +18,7 @@
 // pack, constant (initial state: cells at ambient, cold start; SOC = pack/initial_soc).
 #pragma once
 #include <hybrid_bus_twin/EMachineState.h>
+#include <hybrid_bus_twin/VehicleState.h>
 
 #include <memory>
 
@@ -37,8 +39,9 @@ class BatteryParticipant : public cosim::Participant {
  private:
   std::unique_ptr<BatteryModel> model_;
   cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;
+  cosim::Input<hybrid_bus_twin::VehicleState>* vehicle_ = nullptr;  // DC/DC load of the 24 V consumers
   ros::Publisher state_pub_;
-  double ambient_T_K_ = 298.15, dcdc_power_W_ = 0.0;
+  double ambient_T_K_ = 298.15, dcdc_power_W_ = 0.0;  // last step's DC/DC load [W]
 };
 
 }  // namespace hbt::battery
