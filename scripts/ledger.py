@@ -5,6 +5,10 @@ Three balances, each from the cumulative energies the participants book themselv
   fuel:    m_fuel LHV            = W_engine,net + Q_coolant + Q_exhaust+other
   crank:   W_engine,net          = W_crank,engine + delay        (engine's own work vs work the
                                    driveline received: they differ by the one-exchange delay)
+  electric (hybrid):
+           W_em,crank (e-machine's own crank work) + e-machine losses = E_dc (inverter DC energy)
+           E_battery,terminal + unmet = E_dc + E_dcdc (24 V consumers through the DC/DC)
+           E_battery,chemical = E_battery,terminal + battery losses + RC stored energy
   driveline (vehicle_model.hpp):
            W_crank,engine + W_em = aux (steering, pneumatic, electric, fan) + gearbox drag
                                    + converter + gear load + retarder + axle + shift
@@ -52,7 +56,7 @@ GROUPS = [
     ("friction brakes", ["friction_brakes"]),
     ("kinetic change", ["kinetic_change"]),
 ]
-FUEL_STATES = ["idle_at_stop", "traction", "coasting_motoring", "shifting"]
+FUEL_STATES = ["idle_at_stop", "traction", "coasting_motoring", "shifting", "engine_off"]
 
 
 def _last(d, field, default=0.0):
@@ -87,6 +91,21 @@ def energy_ledger(data):
         sinks += L[key]
     L["aux_total"] = _last(veh, "aux_work_j")
     L["residual"] = crank_engine_J + L["crank_em"] - sinks
+    em, bat = data.get("/emachine/state"), data.get("/battery/state")
+    if em is not None and bat is not None:
+        L["em_motoring"] = _last(em, "mech_motoring_energy_j")
+        L["em_generating"] = _last(em, "mech_generating_energy_j")
+        L["em_coupling_delay"] = L["em_motoring"] + L["em_generating"] - L["crank_em"]
+        L["em_losses"] = sum(_last(em, f) for f in (
+            "copper_loss_energy_j", "iron_loss_energy_j", "rotor_loss_energy_j",
+            "mechanical_loss_energy_j", "inverter_loss_energy_j", "ratio_loss_energy_j"))
+        L["em_dc"] = _last(em, "electrical_energy_j")
+        L["dcdc"] = _last(veh, "dcdc_energy_j")
+        L["battery_terminal"] = _last(bat, "terminal_energy_j")
+        L["battery_unmet"] = _last(bat, "unmet_energy_j")
+        L["battery_losses"] = _last(bat, "loss_energy_j")
+        L["battery_chemical"] = _last(bat, "chemical_energy_j")
+        L["electric_residual"] = L["battery_terminal"] + L["battery_unmet"] - L["em_dc"] - L["dcdc"]
     return {k: v / J_PER_KWH for k, v in L.items()}
 
 
@@ -99,7 +118,8 @@ def ledger_closure(L):
 def operating_state(veh, eng):
     """Per bag sample: index into FUEL_STATES. Standstill -> idle at stop; a gear change in
     progress (drive_mode 3) -> shifting; engine brake torque <= 0 while moving (overrun, fuel
-    cut or engine braking) -> coasting/motoring; otherwise traction."""
+    cut or engine braking) -> coasting/motoring; otherwise traction; engine stopped or being
+    cranked (hybrid stop-start) -> engine_off."""
     n = min(len(veh["t"]), len(eng["t"]))
     v = veh["speed_m_s"][:n]
     mode = veh["drive_mode"][:n]
@@ -108,6 +128,8 @@ def operating_state(veh, eng):
     st[T <= 0.0] = FUEL_STATES.index("coasting_motoring")
     st[mode == 3] = FUEL_STATES.index("shifting")
     st[v < STANDSTILL_M_S] = FUEL_STATES.index("idle_at_stop")
+    if "engine_on" in veh:  # hybrid stop-start (and cranking)
+        st[veh["engine_on"][:n] == 0] = FUEL_STATES.index("engine_off")
     return st
 
 
@@ -147,6 +169,17 @@ def ledger_table(L):
             ("e-machine work at the crank", "crank_em")]
     rows += [(label, key) for key, _, label in DRIVELINE_SINKS]
     rows += [("residual of the driveline balance", "residual")]
+    if "em_dc" in L:
+        rows += [("e-machine crank work while motoring (boost, cranking)", "em_motoring"),
+                 ("e-machine crank work while generating (regen, load-point shift)", "em_generating"),
+                 ("e-machine exchange delay (own work - work at the crank)", "em_coupling_delay"),
+                 ("e-machine + inverter + ratio-stage losses", "em_losses"),
+                 ("e-machine DC energy (net, > 0 drawn)", "em_dc"),
+                 ("24 V consumers via the DC/DC", "dcdc"),
+                 ("battery terminal energy (net, > 0 delivered)", "battery_terminal"),
+                 ("battery losses (ohmic + polarisation)", "battery_losses"),
+                 ("battery chemical energy (net, > 0 released)", "battery_chemical"),
+                 ("residual of the electric path (terminal - DC - DC/DC)", "electric_residual")]
     out = ["| path | kWh | % of fuel |", "|---|---|---|"]
     for label, key in rows:
         out.append("| %s | %.3f | %s |" % (label, L[key], pct(L[key])))

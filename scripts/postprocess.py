@@ -23,6 +23,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ledger  # noqa: E402
 import thermal  # noqa: E402
+import hybrid  # noqa: E402
 
 DIESEL_DENSITY_KG_L = 0.835
 J_PER_KWH = 3.6e6
@@ -150,6 +151,7 @@ def summarise(scenario, args, status, data, stops_csv):
         s["fuel_by_state_kg"] = fuel
         s["time_by_state_s"] = time
     s.update(thermal.thermal_summary(data))
+    s.update(hybrid.hybrid_summary(data, s))
     return s
 
 
@@ -198,6 +200,7 @@ def plots(out, data):
     save(fig, "fuel.png")
 
     thermal.thermal_plots(data, save, plt)
+    hybrid.hybrid_plots(data, save, plt)
     L = ledger.energy_ledger(data)
     if L is not None:
         ledger.plot_ledger(L, os.path.join(out, "energy_ledger.png"))
@@ -244,12 +247,18 @@ def report(out, s, status, files):
         fh.write("\n".join(lines) + "\n")
 
 
-def report_from_bag(bag, out):
-    """summary.json, report.md and plots in `out` from the bag alone; returns (status, summary)."""
+def report_from_bag(bag, out, baseline=None):
+    """summary.json, report.md and plots in `out` from the bag alone; returns (status, summary).
+    baseline: a baseline run's summary.json -> fuel_saving_pct (hybrid, SOC-corrected)."""
     info = read_run_info(bag)
     status = info["status"]
     data = read_bag(bag)
     s = summarise(info["scenario"], info["args"], status, data, info.get("stops_csv", ""))
+    if baseline:
+        with open(baseline) as fh:
+            pct = hybrid.saving(json.load(fh), s)
+        if pct is not None:
+            s["fuel_saving_pct"] = pct
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "summary.json"), "w") as fh:
         json.dump(s, fh, indent=2)
@@ -264,13 +273,14 @@ def main():
     ap.add_argument("out", nargs="?")
     ap.add_argument("--scenario")
     ap.add_argument("--bag", help="report from this bag (scripts/twin report)")
+    ap.add_argument("--baseline", help="a baseline run's summary.json: adds fuel_saving_pct (SOC-corrected)")
     ap.add_argument("args", nargs="*", help="launch arguments name:=value")
     a = ap.parse_intermixed_args()
     if a.bag:
         if not os.path.exists(a.bag):
             sys.exit("twin: no such bag: %s" % a.bag)
         out = a.out or os.path.dirname(os.path.abspath(a.bag))
-        status, s = report_from_bag(a.bag, out)
+        status, s = report_from_bag(a.bag, out, a.baseline)
         print("twin: report of %s written to %s" % (a.bag, out))
         return 0
     if not a.out or not a.scenario:

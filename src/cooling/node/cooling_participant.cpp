@@ -27,6 +27,9 @@ void CoolingParticipant::configure() {
   last_in_.ambient_p_Pa = ambient_p_Pa_;
   heat_ = &addInput<hybrid_bus_twin::EngineHeat>("/engine/heat");
   vehicle_ = &addInput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
+  bool hybrid = false;
+  pnh_.param("loops/ems", hybrid, false);
+  if (hybrid) emachine_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
   state_pub_ = addOutput<hybrid_bus_twin::CoolingState>("/cooling/state");
 }
 
@@ -40,7 +43,9 @@ void CoolingParticipant::step(const ros::Time& t, double dt_s) {
   in.ambient_T_K = v.ambient_temperature_k > 0.0 ? v.ambient_temperature_k : ambient_T_K_;
   in.ambient_p_Pa = ambient_p_Pa_;
   in.fan_demand = v.fan_demand;
-  in.lt_heat_W = 0.0;  // e-machine + inverter losses: from the hybrid's e-machine node later
+  // e-machine + inverter heat into the LT coolant (hybrid); the e-machine steps every 10 ms, this
+  // node every 0.1 s: it reads the held value at its step start (mean over the e-machine's step)
+  in.lt_heat_W = emachine_ ? emachine_->at(t).lt_heat_w : 0.0;
   model_->step(dt_s, in);
   last_in_ = in;
 }

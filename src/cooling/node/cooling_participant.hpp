@@ -8,9 +8,10 @@
 //                        fan_drive_power_w the same at the crank incl. the viscous-clutch slip.
 // Parameters: private namespace = config/cooling.yaml; /scenario/ambient_temperature_c (initial
 // state: everything at ambient, cold start); /scenario/ambient_pressure_pa (default 101325 Pa).
-// The LT heat input (e-machine + power electronics losses) is 0 until the hybrid's e-machine
-// publishes it; the model input exists (CoolingInputs::lt_heat_W).
+// Hybrid (private parameter loops/ems): /emachine/state lt_heat_w (e-machine housing +
+// inverter heat into the LT coolant) feeds the LT circuit; baseline: 0 W (the circuit idles).
 #pragma once
+#include <hybrid_bus_twin/EMachineState.h>
 #include <hybrid_bus_twin/EngineHeat.h>
 #include <hybrid_bus_twin/VehicleToCooling.h>
 
@@ -34,6 +35,7 @@ class CoolingParticipant : public cosim::Participant {
   std::unique_ptr<CoolingModel> model_;
   cosim::Input<hybrid_bus_twin::EngineHeat>* heat_ = nullptr;
   cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
+  cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;  // loops/ems (hybrid) only
   ros::Publisher state_pub_;
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = 101325.0;
   CoolingInputs last_in_;

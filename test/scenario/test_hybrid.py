@@ -1,0 +1,152 @@
+#!/usr/bin/python3
+"""Scenario tests of hybrid_urban (48 V P1: vehicle -> EMS -> engine + e-machine -> battery, with
+the aftertreatment and cooling nodes) on short stretches of the Urban mission:
+nodes and nodelets give bit-identical bags; the torque chain vehicle -> EMS -> e-machine adds no
+macro-step delay (Gauss-Seidel groups); the e-machine never exceeds its live (derated) limits and
+the EMS never boosts or stops the engine while the engine/ATS warm up; the electric path (battery
+terminal = e-machine DC + DC/DC) and the battery and e-machine balances close; the LT circuit is
+fed by the e-machine's heat; with the warm-up thresholds lowered (a config copy) the engine
+stops at standstill, is restarted by the e-machine and the bus still serves its stops."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
+import run_util  # noqa: E402
+
+LAUNCH = os.path.join(REPO, "launch", "hybrid_urban.launch")
+UNTIL = 40.0
+WARM_UNTIL = 150.0
+MODE_BOOST, MODE_REGEN, MODE_STOPPED, MODE_CRANKING = 1, 2, 4, 5
+
+
+def by_stamp(bag, topics):
+    import rosbag
+    out = {t: {} for t in topics}
+    with rosbag.Bag(bag) as b:
+        for topic, m, _ in b.read_messages(topics=topics):
+            out[topic][m.header.stamp.to_nsec()] = m
+    return out
+
+
+def summarise(out):
+    r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"), out,
+                        "--scenario", "hybrid_urban"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f)
+
+
+class Hybrid(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="hbt_hybrid_")
+        cls.runs = {}
+        for name, mode in (("nodes", "nodes"), ("nodelets", "nodelets")):
+            out = os.path.join(cls.tmp, name)
+            st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL, record_period=0)
+            cls.runs[name] = (out, st)
+        # warm: the EMS's warm-up thresholds at 0 degC so that stop-start and boost act at once
+        cfg = os.path.join(cls.tmp, "config")
+        shutil.copytree(os.path.join(REPO, "config"), cfg, ignore=shutil.ignore_patterns("data"))
+        os.symlink(os.path.join(REPO, "config", "data"), os.path.join(cfg, "data"))
+        p = os.path.join(cfg, "ems.yaml")
+        with open(p) as f:
+            t = f.read()
+        t = t.replace("coolant_warm_K: 343.15", "coolant_warm_K: 273.15").replace("scr_warm_K: 473.15", "scr_warm_K: 273.15")
+        with open(p, "w") as f:
+            f.write(t)
+        out = os.path.join(cls.tmp, "warm")
+        cls.warm = (out, run_util.run_launch(LAUNCH, out, mode="nodelets", until=WARM_UNTIL, config=cfg))
+
+    def test_runs_complete_and_modes_bit_identical(self):
+        for name, (out, st) in list(self.runs.items()) + [("warm", self.warm)]:
+            self.assertEqual(st["status"], "ok", (name, st))
+        a = run_util.bag_messages(os.path.join(self.runs["nodes"][0], "run.bag"))
+        b = run_util.bag_messages(os.path.join(self.runs["nodelets"][0], "run.bag"))
+        self.assertEqual(a, b)
+
+    def test_torque_chain_has_no_macro_step_delay(self):
+        """Groups [vehicle, ...], [ems], [engine, emachine], [battery]: the e-machine and the
+        engine step on the EMS's command stamped like their own output (fresh), the EMS on the
+        vehicle's demand of the same stamp, the battery on the e-machine's power of the same stamp."""
+        bag = os.path.join(self.runs["nodes"][0], "run.bag")
+        d = by_stamp(bag, ["/ems/command", "/emachine/state", "/ems/engine_command", "/vehicle/driver_demand",
+                           "/battery/state"])
+        n = 0
+        for t, m in d["/emachine/state"].items():
+            if t == 0:
+                continue
+            c = d["/ems/command"][t]
+            self.assertEqual(m.torque_request_nm, c.em_torque_request_nm, t)
+            self.assertEqual(c.engine_speed_rad_s, d["/vehicle/driver_demand"][t].engine_speed_rad_s, t)
+            self.assertAlmostEqual(d["/battery/state"][t].request_w - d["/battery/state"][t].dcdc_power_w,
+                                   m.electrical_power_w, delta=1e-9 * (1.0 + abs(m.electrical_power_w)), msg=t)
+            n += 1
+        self.assertGreater(n, 3000)
+
+    def test_live_limits_and_warmup_inhibit(self):
+        bag = os.path.join(self.runs["nodes"][0], "run.bag")
+        d = by_stamp(bag, ["/emachine/state", "/ems/command"])
+        em = d["/emachine/state"]
+        ts = sorted(em)
+        for a, b in zip(ts[:-1], ts[1:]):  # the limits published at t bound the torque of the next step
+            self.assertLessEqual(em[b].torque_nm, em[a].torque_max_nm + 1e-9, b)
+            self.assertGreaterEqual(em[b].torque_nm, em[a].torque_min_nm - 1e-9, b)
+        modes = {m.mode for m in d["/ems/command"].values()}
+        self.assertNotIn(MODE_BOOST, modes)  # a cold start at 25 degC: still warming up
+        self.assertNotIn(MODE_STOPPED, modes)
+        self.assertTrue(all(not m.warm for m in d["/ems/command"].values()))
+        self.assertIn(MODE_REGEN, modes)
+
+    def test_balances_close(self):
+        out = os.path.join(self.tmp, "summary")
+        shutil.copytree(self.runs["nodes"][0], out)
+        s = summarise(out)
+        self.assertLess(s["electric_path_closure"], 0.01)
+        self.assertLess(s["battery_balance_closure"], 1e-6)
+        self.assertLess(s["em_balance_closure"], 1e-6)
+        self.assertLess(s["energy_ledger_closure"], 1e-3)
+        self.assertGreater(s["em_brake_kwh"], 0.0)
+        L = s["energy_kwh"]
+        # e-machine: its crank work + losses = DC energy (independently booked by its own node)
+        self.assertAlmostEqual(L["em_motoring"] + L["em_generating"] + L["em_losses"], L["em_dc"],
+                               delta=1e-3 * abs(L["em_dc"]) + 1e-9)
+
+    def test_lt_circuit_fed_by_the_emachine(self):
+        bag = os.path.join(self.runs["nodes"][0], "run.bag")
+        d = by_stamp(bag, ["/emachine/state", "/cooling/state"])
+        n = 0
+        for t, c in d["/cooling/state"].items():
+            if t < 10**8:
+                continue
+            self.assertEqual(c.lt_heat_w, d["/emachine/state"][t - 10**8].lt_heat_w, t)  # held (0.1 s)
+            n += 1
+        self.assertGreater(n, 300)
+        self.assertGreater(max(c.lt_heat_w for c in d["/cooling/state"].values()), 0.0)
+
+    def test_stop_start_when_warm(self):
+        out, st = self.warm
+        self.assertEqual(st["status"], "ok", st)
+        s = summarise(out)
+        self.assertGreater(s["engine_off_s"], 5.0)
+        self.assertGreaterEqual(s["engine_starts"], 1)
+        self.assertGreater(s["em_boost_kwh"], 0.0)
+        self.assertEqual(s["stops_served"], s["stops_total"])
+        d = by_stamp(os.path.join(out, "run.bag"), ["/ems/command", "/engine/state", "/vehicle/state"])
+        off = [t for t, c in d["/ems/command"].items() if c.mode == MODE_STOPPED]
+        self.assertGreater(len(off), 10)
+        for t in off:  # the engine burns nothing while stopped, its crank comes to rest
+            if t in d["/engine/state"]:
+                self.assertEqual(d["/engine/state"][t].fuel_mass_flow_kg_s, 0.0, t)
+        self.assertLess(min(d["/vehicle/state"][t].engine_speed_rad_s for t in off if t in d["/vehicle/state"]), 1.0)
+
+
+if __name__ == "__main__":
+    unittest.main()
