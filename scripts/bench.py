@@ -15,6 +15,13 @@
                                     one table per engine (fuel, warm-up, fan energy, charge air,
                                     light-off, engine-out and tailpipe NOx, balances, wall/sim);
                                     N runs at a time (default 1: wall/sim undisturbed)
+  scripts/twin bench hybrid [--engines map,1d] [--until S] [--jobs N]  issue 11's study:
+                                    baseline_urban and hybrid_urban at 0, 25 and 40 degC for each
+                                    engine (nodelets; the baseline with the same Gauss-Seidel
+                                    torque chain [[vehicle, aftertreatment, cooling], [engine]] as
+                                    the hybrid's, so both see the engine torque without delay);
+                                    one table per temperature (results/bench/hybrid.md) with the
+                                    SOC-corrected fuel saving (scripts/hybrid.py)
 Results: printed as a table and written to results/bench/<name>.json.
 """
 import argparse
@@ -182,16 +189,89 @@ def bench_ambient(a):
     return 0 if all(s for _, s in results) else 1
 
 
+HYBRID_ROWS = [("fuel_kg", "fuel [kg]", "%.3f"), ("fuel_soc_corrected_kg", "fuel, SOC-corrected [kg]", "%.3f"),
+               ("fuel_l_per_100km", "fuel [L/100 km]", "%.2f"), ("fuel_saving_pct", "fuel saving [%]", "%.2f"),
+               ("engine_positive_kwh", "engine positive work [kWh]", "%.2f"),
+               ("em_boost_kwh", "EM boosting [kWh]", "%.2f"), ("em_brake_kwh", "EM braking + charging [kWh]", "%.2f"),
+               ("em_regen_kwh", "  of which regenerative braking [kWh]", "%.2f"),
+               ("em_loss_kwh", "EM + inverter losses [kWh]", "%.2f"), ("battery_loss_kwh", "battery loss [kWh]", "%.3f"),
+               ("fan_kwh", "fan [kWh]", "%.2f"), ("pump_kwh", "HT pump [kWh]", "%.3f"), ("lt_pump_kwh", "LT pump [kWh]", "%.3f"),
+               ("nox_engine_out_g", "NOx engine-out [g]", "%.0f"), ("nox_tailpipe_g", "NOx tailpipe [g]", "%.1f"),
+               ("warmup_s", "coolant warm-up [s]", "%.0f"), ("ats_lightoff_s", "SCR light-off [s]", "%.0f"),
+               ("soc_final", "final SOC [-]", "%.3f"), ("battery_max_c", "max cell T [°C]", "%.1f"),
+               ("winding_max_c", "max winding T [°C]", "%.1f"), ("em_derating_s", "EM derating [s]", "%.0f"),
+               ("engine_off_s", "engine off [s]", "%.0f"), ("engine_starts", "restarts", "%d"),
+               ("warmup_inhibit_s", "warm-up inhibit [s]", "%.0f"),
+               ("electric_path_closure", "electric-path balance", "%.1e"), ("speed_rmse_kmh", "speed RMSE [km/h]", "%.2f")]
+
+
+def bench_hybrid(a):
+    """Issue 11 acceptance: baseline vs hybrid at 0, 25 and 40 degC with each engine (nodelets)."""
+    from concurrent.futures import ThreadPoolExecutor
+    engines = [e for e in a.engines.split(",") if e]
+    jobs = []
+    for engine in engines:
+        for amb in (0, 25, 40):
+            for scen in ("baseline_urban", "hybrid_urban"):
+                out = os.path.join(REPO, "results", "bench", "hybrid_%s_%s_%dC" % (scen.split("_")[0], engine, amb))
+                os.makedirs(os.path.dirname(out), exist_ok=True)
+                args = ["mode:=nodelets", "ambient:=%d" % amb, "engine:=" + engine, "timeout:=10"]
+                if scen == "baseline_urban":
+                    args.append("order:=[[vehicle, aftertreatment, cooling], [engine]]")
+                if a.until:
+                    args.append("until:=%g" % a.until)
+                jobs.append(((engine, amb, scen), out, args))
+    with ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
+        results = dict(ex.map(lambda j: (j[0], (j[1], run_scenario(j[0][2], j[1], j[2]))), jobs))
+    # the hybrid's saving against its baseline (SOC-corrected): the report from the hybrid's bag
+    for engine in engines:
+        for amb in (0, 25, 40):
+            (bo, bs), (ho, hs) = results[(engine, amb, "baseline_urban")], results[(engine, amb, "hybrid_urban")]
+            if bs and hs:
+                subprocess.call([sys.executable, os.path.join(REPO, "scripts", "postprocess.py"), ho,
+                                 "--bag", os.path.join(ho, "run.bag"), "--baseline", os.path.join(bo, "summary.json")],
+                                stdout=subprocess.DEVNULL)
+                with open(os.path.join(ho, "summary.json")) as f:
+                    cpu = hs.get("cpu_time_s", {})
+                    hs.clear()
+                    hs.update(json.load(f))
+                    hs["cpu_time_s"] = cpu
+    lines = ["# Baseline vs 48 V P1 hybrid, VECTO Urban, full mission%s" % (" (first %g s)" % a.until if a.until else ""), "",
+             "Produced by `scripts/twin bench hybrid --engines %s --jobs %d`; nodelets; both runs of a pair with the"
+             " torque chain stepped without delay (Gauss-Seidel groups). Saving = (baseline fuel - hybrid fuel"
+             " corrected for the battery's energy change) / baseline fuel (scripts/hybrid.py)." % (a.engines, a.jobs), ""]
+    table = {}
+    for engine in engines:
+        for amb in (0, 25, 40):
+            bs, hs = results[(engine, amb, "baseline_urban")][1], results[(engine, amb, "hybrid_urban")][1]
+            lines += ["## %s engine, %d °C" % (engine, amb), "", "| quantity | baseline | hybrid |", "|---|---|---|"]
+            for key, label, fmt in HYBRID_ROWS:
+                cell = lambda s: (fmt % s[key]) if s and key in s and s[key] is not None else "-"
+                lines.append("| %s | %s | %s |" % (label, cell(bs), cell(hs)))
+            for s, name in ((bs, "baseline"), (hs, "hybrid")):
+                if s:
+                    table["%s_%s_%d" % (name, engine, amb)] = s
+            wall = lambda s: ("%.4f" % (s["wall_time_s"] / s["sim_time_s"])) if s else "-"
+            lines += ["| wall/sim | %s | %s |" % (wall(bs), wall(hs)), ""]
+    text = "\n".join(lines) + "\n"
+    print(text)
+    with open(os.path.join(REPO, "results", "bench", "hybrid.md"), "w") as f:
+        f.write(text)
+    with open(os.path.join(REPO, "results", "bench", "hybrid.json"), "w") as f:
+        json.dump(table, f, indent=2)
+    return 0 if all(s for _, s in results.values()) else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient"])
-    ap.add_argument("--engines", default="map,1d", help="ambient: engine models, comma-separated")
-    ap.add_argument("--jobs", type=int, default=1, help="ambient: runs at a time")
+    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient", "hybrid"])
+    ap.add_argument("--engines", default="map,1d", help="ambient, hybrid: engine models, comma-separated")
+    ap.add_argument("--jobs", type=int, default=1, help="ambient, hybrid: runs at a time")
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     ap.add_argument("--duration", type=float, default=1800.0,
                     help="engine: WHTC seconds to run (default the whole 1800 s)")
     a = ap.parse_args()
-    return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient}[a.what](a)
+    return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient, "hybrid": bench_hybrid}[a.what](a)
 
 
 if __name__ == "__main__":
