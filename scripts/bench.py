@@ -22,6 +22,9 @@
                                     the hybrid's, so both see the engine torque without delay);
                                     one table per temperature (results/bench/hybrid.md) with the
                                     SOC-corrected fuel saving (scripts/hybrid.py)
+  scripts/twin bench rates [--engines map] [--until S]  multi-rate stepping vs everything at the
+                                    10 ms base step (cooling macro step, ATS model step 0.01 s in a
+                                    config copy): fuel and temperature rises (issue 9, item 1)
 Results: printed as a table and written to results/bench/<name>.json.
 """
 import argparse
@@ -200,6 +203,7 @@ HYBRID_ROWS = [("fuel_kg", "fuel [kg]", "%.3f"), ("fuel_soc_corrected_kg", "fuel
                ("warmup_s", "coolant warm-up [s]", "%.0f"), ("ats_lightoff_s", "SCR light-off [s]", "%.0f"),
                ("soc_final", "final SOC [-]", "%.3f"), ("battery_max_c", "max cell T [°C]", "%.1f"),
                ("winding_max_c", "max winding T [°C]", "%.1f"), ("em_derating_s", "EM derating [s]", "%.0f"),
+               ("em_clamped_s", "EM request clamped [s]", "%.1f"), ("battery_limited_s", "battery request limited [s]", "%.1f"),
                ("engine_off_s", "engine off [s]", "%.0f"), ("engine_starts", "restarts", "%d"),
                ("warmup_inhibit_s", "warm-up inhibit [s]", "%.0f"),
                ("electric_path_closure", "electric-path balance", "%.1e"), ("speed_rmse_kmh", "speed RMSE [km/h]", "%.2f")]
@@ -262,16 +266,51 @@ def bench_hybrid(a):
     return 0 if all(s for _, s in results.values()) else 1
 
 
+def bench_rates(a):
+    """Issue 9 item 1: the documented rates vs all at 10 ms, full mission, nodelets."""
+    import shutil
+    sys.path.insert(0, os.path.join(REPO, "test", "scenario"))
+    from test_rates import all_fast_config  # the same config edit as the test
+    tmp = os.path.join(REPO, "results", "bench", "rates_config")
+    shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(tmp)
+    cfg = all_fast_config(tmp)
+    rows = []
+    for engine in [e for e in a.engines.split(",") if e]:
+        res = {}
+        for name, extra in (("multirate", []), ("all_10ms", ["config:=" + cfg])):
+            out = os.path.join(REPO, "results", "bench", "rates_%s_%s" % (engine, name))
+            args = ["mode:=nodelets", "engine:=" + engine, "timeout:=10"] + extra
+            if a.until:
+                args.append("until:=%g" % a.until)
+            res[name] = run_scenario("baseline_urban", out, args)
+        rows.append((engine, res))
+    print("\n| engine | quantity | multi-rate | all 10 ms | difference |")
+    print("|---|---|---|---|---|")
+    for engine, res in rows:
+        m, f = res["multirate"], res["all_10ms"]
+        if not (m and f):
+            print("| %s | run failed | | | |" % engine)
+            continue
+        for key in ("fuel_kg", "warmup_s", "ats_lightoff_s", "nox_tailpipe_g", "fan_kwh"):
+            if key in m and key in f and f[key]:
+                print("| %s | %s | %.4f | %.4f | %+.3f %% |" % (engine, key, m[key], f[key], 100 * (m[key] / f[key] - 1)))
+        print("| %s | wall/sim | %.4f | %.4f | |" % (engine, m["wall_time_s"] / m["sim_time_s"], f["wall_time_s"] / f["sim_time_s"]))
+    with open(os.path.join(REPO, "results", "bench", "rates.json"), "w") as fh:
+        json.dump({e: r for e, r in rows}, fh, indent=2)
+    return 0 if all(r["multirate"] and r["all_10ms"] for _, r in rows) else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient", "hybrid"])
+    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient", "hybrid", "rates"])
     ap.add_argument("--engines", default="map,1d", help="ambient, hybrid: engine models, comma-separated")
     ap.add_argument("--jobs", type=int, default=1, help="ambient, hybrid: runs at a time")
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     ap.add_argument("--duration", type=float, default=1800.0,
                     help="engine: WHTC seconds to run (default the whole 1800 s)")
     a = ap.parse_args()
-    return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient, "hybrid": bench_hybrid}[a.what](a)
+    return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient, "hybrid": bench_hybrid, "rates": bench_rates}[a.what](a)
 
 
 if __name__ == "__main__":

@@ -7,7 +7,8 @@ it absorbed while generating, positive: regenerative braking + load-point shift)
 (the part absorbed while the EMS was in regen mode, booked per bag interval by the mode at the
 interval's end), em_loss_kwh, battery_loss_kwh, battery_heat_kwh, dcdc_kwh, soc_initial,
 soc_final, battery_max_c, winding_max_c, em_derating_s (time with the e-machine's live limits
-below its peak envelope), engine_off_s, engine_starts, cranking_s, warmup_inhibit_s,
+below its peak envelope), em_clamped_s (time the EMS asked beyond the e-machine's live limits and
+the e-machine clamped), battery_limited_s (time the battery's power request exceeded its limits), engine_off_s, engine_starts, cranking_s, warmup_inhibit_s,
 electric_path_closure (|battery terminal energy - e-machine DC energy - DC/DC energy - unmet| /
 throughput), battery_balance_closure, em_balance_closure, fuel_soc_corrected_kg and, given a
 baseline summary (scripts/twin report --baseline), fuel_saving_pct.
@@ -61,6 +62,12 @@ def hybrid_summary(data, summary):
     der = em["derating_factor"] < 1.0 - 1e-9
     dt = np.diff(em["t"])
     s["em_derating_s"] = float(np.sum(dt[der[1:]]))
+    # limits: the e-machine clamps a request beyond its live limits (it never exceeds them); the
+    # EMS should not ask beyond them: time with a clamped request (bag samples), and the
+    # battery's own count of steps whose request exceeded its power limits
+    clamped = np.abs(em["torque_request_nm"] - em["torque_nm"]) > 1e-6 * (1.0 + np.abs(em["torque_request_nm"]))
+    s["em_clamped_s"] = float(np.sum(dt[clamped[1:]]))
+    s["battery_limited_s"] = _l(bat, "limited_time_s")
     if veh is not None and "dcdc_energy_j" in veh:
         s["dcdc_kwh"] = _l(veh, "dcdc_energy_j") / J_PER_KWH
     if cool is not None:

@@ -8,6 +8,7 @@ void EMachineParams::declare(ParamSet& ps) {
   ps.setPrefix("data/");
   ps.add("vemp_file", data.vemp_file, "VECTO .vemp peak envelope (drive/recuperation torque vs EM speed)");
   ps.add("ratio", data.ratio, "-", 0.2, 10.0, "EM speed / crank speed");
+  ps.add("rotor_inertia_kgm2", data.rotor_inertia_kgm2, "kg m^2", 0.0, 5.0, "rotor inertia at the EM shaft (vehicle: on the crank)");
   ps.add("ratio_efficiency", data.ratio_efficiency, "-", 0.5, 1.0, "efficiency of the EM-crank ratio stage");
 
   EnvelopeParams& e = envelope;

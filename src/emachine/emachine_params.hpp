@@ -16,6 +16,10 @@ struct DataParams {
       "config/data/vehicle/citybus_P1_hybrid_48V/GenericEM_15kW_220Nm_fullload.vemp";
   double ratio = 2.0;             // EM speed / crank speed (VECTO EM_ratio)
   double ratio_efficiency = 0.98; // of that ratio stage (VECTO EM_mech_efficiency)
+  /// Rotor inertia at the EM shaft [kg m²] (VECTO .vem); not used by the e-machine model: the
+  /// vehicle adds rotor_inertia_kgm2 · ratio² to the crank inertia (crankInertia_kgm2()).
+  double rotor_inertia_kgm2 = 0.198;
+  double crankInertia_kgm2() const { return rotor_inertia_kgm2 * ratio * ratio; }
 };
 
 /// Peak envelope scaling with the DC voltage, continuous envelope, under-voltage cut-off.

@@ -237,7 +237,7 @@ class Failures(unittest.TestCase):
 
     def test_killed_node_stops_run(self):
         out = os.path.join(self.tmp, "kill")
-        proc = run_util.start_launch(LAUNCH, out, until=0)
+        proc = run_util.start_launch(LAUNCH, out, until=0, mode="nodes")  # a process to kill
         self.addCleanup(run_util.stop, proc)
         pid = run_util.pid_of_node(proc, "engine")
         # wait until the run is stepping (the vehicle wrote its profile, then some wall time)

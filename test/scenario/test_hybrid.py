@@ -114,6 +114,9 @@ class Hybrid(unittest.TestCase):
         self.assertLess(s["em_balance_closure"], 1e-6)
         self.assertLess(s["energy_ledger_closure"], 1e-3)
         self.assertGreater(s["em_brake_kwh"], 0.0)
+        # the EMS asked nothing beyond the live limits of the e-machine and the battery
+        self.assertEqual(s["em_clamped_s"], 0.0)
+        self.assertEqual(s["battery_limited_s"], 0.0)
         L = s["energy_kwh"]
         # e-machine: its crank work + losses = DC energy (independently booked by its own node)
         self.assertAlmostEqual(L["em_motoring"] + L["em_generating"] + L["em_losses"], L["em_dc"],
@@ -124,9 +127,12 @@ class Hybrid(unittest.TestCase):
         d = by_stamp(bag, ["/emachine/state", "/cooling/state"])
         n = 0
         for t, c in d["/cooling/state"].items():
-            if t < 10**8:
+            if t < 2 * 10**8:
                 continue
-            self.assertEqual(c.lt_heat_w, d["/emachine/state"][t - 10**8].lt_heat_w, t)  # held (0.1 s)
+            # the mean LT heat of the e-machine's last 0.1 s before the cooling node's step start
+            e0, e1 = d["/emachine/state"][t - 2 * 10**8], d["/emachine/state"][t - 10**8]
+            self.assertAlmostEqual(c.lt_heat_w, (e1.heat_to_coolant_energy_j - e0.heat_to_coolant_energy_j) / 0.1,
+                                   delta=1e-6 * (1.0 + abs(c.lt_heat_w)), msg=t)
             n += 1
         self.assertGreater(n, 300)
         self.assertGreater(max(c.lt_heat_w for c in d["/cooling/state"].values()), 0.0)
@@ -139,6 +145,8 @@ class Hybrid(unittest.TestCase):
         self.assertGreaterEqual(s["engine_starts"], 1)
         self.assertGreater(s["em_boost_kwh"], 0.0)
         self.assertEqual(s["stops_served"], s["stops_total"])
+        self.assertEqual(s["battery_limited_s"], 0.0)
+        self.assertLess(s["electric_path_closure"], 0.01)
         d = by_stamp(os.path.join(out, "run.bag"), ["/ems/command", "/engine/state", "/vehicle/state"])
         off = [t for t, c in d["/ems/command"].items() if c.mode == MODE_STOPPED]
         self.assertGreater(len(off), 10)

@@ -1,7 +1,8 @@
 // ROS bridge of the cooling system: converts messages and parameters, nothing else. Model:
 // hbt::cooling::CoolingModel (../cooling_model.hpp).
 //
-// Inputs  (stamped t_k): /engine/heat (EngineHeat: heat_to_coolant_w, coolant_pump_speed_rad_s),
+// Inputs  (stamped t_k): /engine/heat (EngineHeat: heat_to_coolant_j differenced over this node's
+//                        macro step = the mean heat of the last 0.1 s; coolant_pump_speed_rad_s),
 //                        /vehicle/to_cooling (VehicleToCooling: vehicle speed, ambient T, fan_demand).
 // Output  (stamped t_k): /cooling/state (CoolingState). fan_power_w is the signed fan shaft
 //                        power (> 0 absorbed, < 0 windmilling = returned to the shaft);
@@ -39,6 +40,8 @@ class CoolingParticipant : public cosim::Participant {
   ros::Publisher state_pub_;
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = 101325.0;
   CoolingInputs last_in_;
+  bool started_ = false;                                       // a step was taken
+  double prev_engine_heat_J_ = 0.0, prev_lt_heat_J_ = 0.0;     // producers' cumulative heat at the last step [J]
 };
 
 }  // namespace hbt::cooling

@@ -11,6 +11,7 @@
 #include "common/yaml_params.hpp"
 #include "common/units.hpp"
 #include "cosim/param_loader.hpp"
+#include "emachine/emachine_params.hpp"
 #include "mission/mission_preprocessor.hpp"
 
 namespace hbt::vehicle {
@@ -26,13 +27,21 @@ void VehicleParticipant::configure() {
   }
   ParamSet ps;
   p.declare(ps);
-  cosim::applyRosParams(pnh_, ps, configFile(), {"mission/", "mission_config_file", "aux_config_file"});
+  cosim::applyRosParams(pnh_, ps, configFile(), {"mission/", "mission_config_file", "aux_config_file", "em_config_file"});
   double payload_kg = p.chassis.payload_kg, ambient_c = 25.0;
   nh_.param("/scenario/payload_kg", payload_kg, payload_kg);
   nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
   if (!(payload_kg >= 0.0 && payload_kg <= 15000.0))
     throw InputError("scenario (launch argument)", "payload", "must be in [0, 15000] kg");
   p.chassis.payload_kg = payload_kg;
+  std::string em_file;  // hybrid: the P1 rotor turns with the crank (ratio² x its inertia)
+  if (pnh_.getParam("em_config_file", em_file)) {
+    emachine::EMachineParams ep;
+    ParamSet eps;
+    ep.declare(eps);
+    applyParams(eps, readYamlParams(em_file), {"cosim/"});
+    p.driveline.engine_inertia_kg_m2 += ep.data.crankInertia_kgm2();
+  }
   p.validate(configFile());
   ambient_T_K_ = units::celsiusToK(ambient_c);
   std::string pkg, out_dir, cycle;

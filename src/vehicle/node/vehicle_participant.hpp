@@ -14,7 +14,8 @@
 // Parameters: private namespace = config/vehicle.yaml, private group `mission/` =
 // config/mission.yaml (its vehicle/* road-load keys are overridden by the vehicle model's mass,
 // drag area, rolling resistance and rotating mass so that the profile is planned for this bus);
-// /scenario/{ambient_temperature_c, payload_kg, cycle_file, out_dir, package_dir}.
+// /scenario/{ambient_temperature_c, payload_kg, cycle_file, out_dir, package_dir}; hybrid:
+// em_config_file (config/emachine.yaml) -> the P1 rotor's inertia x ratio² joins the crank's.
 // Side outputs at start-up: <out_dir>/profile.csv (time-based target profile) and
 // <out_dir>/stops.csv (stop positions and times); the mission duration in its ANNOUNCE.
 #pragma once
