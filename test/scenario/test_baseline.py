@@ -43,7 +43,8 @@ class Baseline(unittest.TestCase):
         cls.runs = {}
         for name, mode in (("nodes", "nodes"), ("nodes2", "nodes"), ("nodelets", "nodelets")):
             out = os.path.join(cls.tmp, name)
-            st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL, record_period=0)
+            # timeout 10 s: a hang detector; 1 s tripped on this 2-core machine under a load of 10+
+            st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL, record_period=0, timeout=10.0)
             cls.runs[name] = (out, st)
 
     def test_runs_complete(self):

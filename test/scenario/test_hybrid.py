@@ -50,7 +50,7 @@ class Hybrid(unittest.TestCase):
         cls.runs = {}
         for name, mode in (("nodes", "nodes"), ("nodelets", "nodelets")):
             out = os.path.join(cls.tmp, name)
-            st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL, record_period=0)
+            st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL, record_period=0, timeout=10.0)
             cls.runs[name] = (out, st)
         # warm: the EMS's warm-up thresholds at 0 degC so that stop-start and boost act at once
         cfg = os.path.join(cls.tmp, "config")
@@ -63,7 +63,7 @@ class Hybrid(unittest.TestCase):
         with open(p, "w") as f:
             f.write(t)
         out = os.path.join(cls.tmp, "warm")
-        cls.warm = (out, run_util.run_launch(LAUNCH, out, mode="nodelets", until=WARM_UNTIL, config=cfg))
+        cls.warm = (out, run_util.run_launch(LAUNCH, out, mode="nodelets", until=WARM_UNTIL, config=cfg, timeout=10.0))
 
     def test_runs_complete_and_modes_bit_identical(self):
         for name, (out, st) in list(self.runs.items()) + [("warm", self.warm)]:
