@@ -2,6 +2,7 @@
 // one place that fills EngineState, ExhaustState and EngineHeat from model-neutral values (SI).
 #pragma once
 #include <hybrid_bus_twin/AftertreatmentState.h>
+#include <boost/make_shared.hpp>
 #include <hybrid_bus_twin/CoolingState.h>
 #include <hybrid_bus_twin/EngineHeat.h>
 #include <hybrid_bus_twin/EngineState.h>
@@ -68,7 +69,7 @@ class EnginePorts {
     s.back_pressure_pa = v.back_pressure_Pa;
     s.friction_correction_nm = v.friction_correction_Nm;
     s.pumping_correction_nm = v.pumping_correction_Nm;
-    state_.publish(s);
+    state_.publish(boost::make_shared<hybrid_bus_twin::EngineState>(s));
     hybrid_bus_twin::ExhaustState x;
     x.header.stamp = t;
     x.mass_flow_kg_s = v.exhaust_mass_flow_kg_s;
@@ -79,13 +80,13 @@ class EnginePorts {
     x.y_n2 = v.y_N2;
     x.nox_mass_flow_kg_s = v.nox_mass_flow_kg_s;
     x.nox_mass_kg = v.nox_mass_kg;
-    exhaust_.publish(x);
+    exhaust_.publish(boost::make_shared<hybrid_bus_twin::ExhaustState>(x));
     hybrid_bus_twin::EngineHeat h;
     h.header.stamp = t;
     h.heat_to_coolant_w = v.heat_to_coolant_W;
     h.heat_to_coolant_j = v.heat_to_coolant_J;
     h.coolant_pump_speed_rad_s = v.speed_rad_s;  // mechanical pump driven 1:1 by the crank
-    heat_.publish(h);
+    heat_.publish(boost::make_shared<hybrid_bus_twin::EngineHeat>(h));
   }
 
  private:

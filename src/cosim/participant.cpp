@@ -1,6 +1,7 @@
 // ROS transport of core::ParticipantCore: StepCommand -> core events, core statuses -> StepStatus,
 // the announce timer, link checks against the master, and the calls into the subclass's model.
 #include "cosim/participant.hpp"
+#include <boost/make_shared.hpp>
 
 #include <ros/master.h>
 
@@ -95,7 +96,7 @@ class Participant::Hooks : public core::ParticipantHooks {
     s.observer = c.observer;
     s.mission_duration_s = c.mission_duration_s;
     s.step_multiple = c.step_multiple;
-    p_.status_pub_.publish(s);
+    p_.status_pub_.publish(boost::make_shared<StepStatus>(s));
   }
 
  private:

@@ -1,5 +1,6 @@
 // ROS transport of core::StepperCore (see stepper.hpp).
 #include "cosim/stepper.hpp"
+#include <boost/make_shared.hpp>
 
 #include <hybrid_bus_twin/StepCommand.h>
 #include <rosgraph_msgs/Clock.h>
@@ -112,13 +113,13 @@ void Stepper::sendCommand(const core::Command& c) {
   m.participants = c.table.participants;
   m.participant_multiple = c.table.participant_multiple;
   m.participant_group = c.table.participant_group;
-  cmd_pub_.publish(m);
+  cmd_pub_.publish(boost::make_shared<StepCommand>(m));
 }
 
 void Stepper::publishClock(core::Nanos t) {
   rosgraph_msgs::Clock c;
   c.clock = fromNanos(t);
-  clock_pub_.publish(c);
+  clock_pub_.publish(boost::make_shared<rosgraph_msgs::Clock>(c));
 }
 
 void Stepper::progress(bool force) {

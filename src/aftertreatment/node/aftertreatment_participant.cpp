@@ -1,4 +1,5 @@
 #include "aftertreatment/node/aftertreatment_participant.hpp"
+#include <boost/make_shared.hpp>
 
 #include <hybrid_bus_twin/AftertreatmentState.h>
 
@@ -116,7 +117,7 @@ void AftertreatmentParticipant::publishOutputs(const ros::Time& t) {
   s.nh3_reacted_mol = n.nh3_scr_reacted_mol;
   s.nh3_oxidised_mol = n.nh3_scr_oxidised_mol + n.nh3_asc_oxidised_mol;
   s.nh3_balance_residual_mol = n.residual_mol();
-  state_pub_.publish(s);
+  state_pub_.publish(boost::make_shared<hybrid_bus_twin::AftertreatmentState>(s));
 }
 
 }  // namespace hbt::aftertreatment

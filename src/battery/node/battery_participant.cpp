@@ -1,4 +1,5 @@
 #include "battery/node/battery_participant.hpp"
+#include <boost/make_shared.hpp>
 
 #include <hybrid_bus_twin/BatteryState.h>
 
@@ -69,7 +70,7 @@ void BatteryParticipant::publishOutputs(const ros::Time& t) {
   s.unmet_energy_j = o.unmet_energy_J;
   s.charge_throughput_ah = o.charge_throughput_Ah;
   s.limited_time_s = o.limited_time_s;
-  state_pub_.publish(s);
+  state_pub_.publish(boost::make_shared<hybrid_bus_twin::BatteryState>(s));
 }
 
 }  // namespace hbt::battery

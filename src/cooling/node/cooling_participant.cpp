@@ -1,4 +1,5 @@
 #include "cooling/node/cooling_participant.hpp"
+#include <boost/make_shared.hpp>
 
 #include <hybrid_bus_twin/CoolingState.h>
 
@@ -101,7 +102,7 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.stored_energy_change_j = o.stored_change_J;
   s.energy_residual_j = o.energy_residual_J;
   s.warmup_time_s = o.warmup_time_s;
-  state_pub_.publish(s);
+  state_pub_.publish(boost::make_shared<hybrid_bus_twin::CoolingState>(s));
 }
 
 }  // namespace hbt::cooling

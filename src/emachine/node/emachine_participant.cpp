@@ -1,4 +1,5 @@
 #include "emachine/node/emachine_participant.hpp"
+#include <boost/make_shared.hpp>
 
 #include <hybrid_bus_twin/EMachineState.h>
 
@@ -85,7 +86,7 @@ void EMachineParticipant::publishOutputs(const ros::Time& t) {
   s.heat_to_coolant_energy_j = o.heat_to_coolant_J;
   s.stored_energy_change_j = o.stored_change_J;
   s.energy_residual_j = o.energy_residual_J;
-  state_pub_.publish(s);
+  state_pub_.publish(boost::make_shared<hybrid_bus_twin::EMachineState>(s));
 }
 
 }  // namespace hbt::emachine

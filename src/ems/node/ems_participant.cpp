@@ -1,4 +1,5 @@
 #include "ems/node/ems_participant.hpp"
+#include <boost/make_shared.hpp>
 
 #include <hybrid_bus_twin/EmsCommand.h>
 #include <hybrid_bus_twin/EngineCommand.h>
@@ -91,7 +92,7 @@ void EmsParticipant::publishOutputs(const ros::Time& t) {
   c.stopped_time_s = e.stopped_time_s;
   c.cranking_time_s = e.cranking_time_s;
   c.warmup_inhibit_time_s = e.warmup_inhibit_time_s;
-  command_pub_.publish(c);
+  command_pub_.publish(boost::make_shared<hybrid_bus_twin::EmsCommand>(c));
 
   hybrid_bus_twin::EngineCommand ec;
   ec.header.stamp = t;
@@ -100,7 +101,7 @@ void EmsParticipant::publishOutputs(const ros::Time& t) {
   ec.engine_on = e.engine_on;
   ec.ambient_temperature_k = last_demand_.ambient_temperature_k;
   ec.ambient_pressure_pa = last_demand_.ambient_pressure_pa;
-  engine_pub_.publish(ec);
+  engine_pub_.publish(boost::make_shared<hybrid_bus_twin::EngineCommand>(ec));
 }
 
 }  // namespace hbt::ems

@@ -1,4 +1,5 @@
 #include "vehicle/node/vehicle_participant.hpp"
+#include <boost/make_shared.hpp>
 
 #include <hybrid_bus_twin/DriverDemand.h>
 #include <hybrid_bus_twin/EngineCommand.h>
@@ -179,7 +180,7 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
   s.wheel_work_j = en.wheel_J;
   s.energy_residual_j = en.residual_J();
   s.mission_finished = ts >= profile_.duration_s() - 1e-9;
-  state_pub_.publish(s);
+  state_pub_.publish(boost::make_shared<hybrid_bus_twin::VehicleState>(s));
 
   const double r_tyre = model_->params().chassis.tyre_radius_m;
   if (ems_) {
@@ -200,7 +201,7 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
     d.engine_min_torque_nm = last_engine_min_Nm_;
     d.ambient_temperature_k = ambient_T_K_;
     d.ambient_pressure_pa = model_->params().chassis.ambient_pressure_Pa;
-    demand_pub_.publish(d);
+    demand_pub_.publish(boost::make_shared<hybrid_bus_twin::DriverDemand>(d));
   } else {
     hybrid_bus_twin::EngineCommand c;
     c.header.stamp = t;
@@ -209,14 +210,14 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
     c.engine_on = true;
     c.ambient_temperature_k = ambient_T_K_;
     c.ambient_pressure_pa = model_->params().chassis.ambient_pressure_Pa;
-    command_pub_.publish(c);
+    command_pub_.publish(boost::make_shared<hybrid_bus_twin::EngineCommand>(c));
   }
 
   hybrid_bus_twin::VehicleToCooling vc;
   vc.header.stamp = t;
   vc.vehicle_speed_m_s = o.speed_m_s;
   vc.ambient_temperature_k = ambient_T_K_;
-  cooling_pub_.publish(vc);
+  cooling_pub_.publish(boost::make_shared<hybrid_bus_twin::VehicleToCooling>(vc));
 }
 
 }  // namespace hbt::vehicle
