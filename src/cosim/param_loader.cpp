@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 
 namespace hbt::cosim {
 namespace {
@@ -64,6 +65,14 @@ void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::s
   ignore_prefixes.push_back("loops/");  // engine loop switches (engine_ports.hpp), not model keys
   ignore_prefixes.push_back("cosim/");  // protocol keys read by the Participant base class
   applyParams(ps, loadParamSource(pnh, "", file), ignore_prefixes);
+}
+
+double scenarioAmbient_K(const ros::NodeHandle& nh) {
+  double ambient_c = 25.0;
+  nh.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
+  if (!(ambient_c > -60.0 && ambient_c < 60.0))
+    throw InputError("scenario (launch argument)", "ambient_temperature_c", "must be in (-60, 60) degC");
+  return units::celsiusToK(ambient_c);
 }
 
 std::string resolvePackagePath(const ros::NodeHandle& nh, const std::string& path) {

@@ -25,6 +25,10 @@ void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::s
 
 /// Resolves a data path given in a config file: absolute paths stay, relative paths are taken
 /// against the package root (scenario parameter /scenario/package_dir).
+/// /scenario/ambient_temperature_c [degC] (default 25) as K; outside (-60, 60) degC: InputError
+/// naming the launch argument.
+double scenarioAmbient_K(const ros::NodeHandle& nh);
+
 std::string resolvePackagePath(const ros::NodeHandle& nh, const std::string& path);
 
 }  // namespace hbt::cosim

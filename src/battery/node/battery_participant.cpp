@@ -15,11 +15,7 @@ void BatteryParticipant::configure() {
   p.declare(ps);
   cosim::applyRosParams(pnh_, ps, configFile());
   p.cell.table_file = cosim::resolvePackagePath(nh_, p.cell.table_file);
-  double ambient_c = 25.0;
-  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
-  if (!(ambient_c > -60.0 && ambient_c < 60.0))
-    throw InputError("scenario (launch argument)", "ambient_temperature_c", "must be in (-60, 60) degC");
-  ambient_T_K_ = units::celsiusToK(ambient_c);
+  ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
   model_ = std::make_unique<BatteryModel>(p, configFile());
   model_->reset(ambient_T_K_);  // cold start: cells at ambient, SOC = pack/initial_soc
   emachine_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");

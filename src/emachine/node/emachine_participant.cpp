@@ -15,11 +15,7 @@ void EMachineParticipant::configure() {
   p.declare(ps);
   cosim::applyRosParams(pnh_, ps, configFile());
   p.data.vemp_file = cosim::resolvePackagePath(nh_, p.data.vemp_file);
-  double ambient_c = 25.0;
-  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
-  if (!(ambient_c > -60.0 && ambient_c < 60.0))
-    throw InputError("scenario (launch argument)", "ambient_temperature_c", "must be in (-60, 60) degC");
-  ambient_T_K_ = units::celsiusToK(ambient_c);
+  ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
   bool cooling = false;
   pnh_.param("loops/cooling", cooling, false);
   model_ = std::make_unique<EMachineModel>(p, configFile());
