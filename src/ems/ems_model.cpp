@@ -9,10 +9,10 @@ namespace hbt::ems {
 
 EmsModel::EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_supported)
     : p_(p), fuel_(fuel), stop_start_supported_(stop_start_supported) {
-  reset(p.ecms.soc_target);
+  reset();
 }
 
-void EmsModel::reset(double /*soc0*/) {
+void EmsModel::reset() {
   state_ = State::Running;
   soc_integral_ = 0.0;
   on_time_s_ = 1e9;  // the engine has been running "for ever" at t = 0 (it starts running)
@@ -124,8 +124,8 @@ void EmsModel::regen(const EmsInputs& in) {
   const double bat_lim = std::max(0.0, in.charge_limit_W) / (w * p_.ecms.em_generator_efficiency);
   const double want = in.wheel_brake_demand_Nm / i;
   double T = std::min({em_lim, bat_lim, want});
+  // all of it regenerated, or the binding limit (the friction brake takes the rest)
   d_.reason = T >= want ? Reason::EcmsOptimum : (em_lim <= bat_lim ? Reason::EmLimit : Reason::BatteryLimit);
-  if (T < want) d_.reason = d_.reason == Reason::EcmsOptimum ? Reason::BrakeBlend : d_.reason;
   T = std::max(0.0, T);
   d_.em_torque_request_Nm = -T;
   d_.friction_brake_Nm = std::max(0.0, in.wheel_brake_demand_Nm - i * T);

@@ -49,8 +49,7 @@ enum class Reason : uint8_t {
   SocHigh = 4,            // SOC above soc_max: no charging by load-point shift
   EmLimit = 5,            // the e-machine's live (derated) limit bounds the optimum / regen
   BatteryLimit = 6,       // the battery's power limit bounds the optimum / regen
-  BrakeBlend = 7,         // regen full, the friction brake takes the rest
-  StandstillStop = 8,     // engine stopped at standstill
+  StandstillStop = 8,     // (7 unused: regen short of the demand names its limit, 5 or 6)     // engine stopped at standstill
   DriveOff = 9,           // restart: the driver wants to go
   SocRestart = 10,        // restart: SOC fell below soc_restart
   CooledRestart = 11,     // restart: the coolant fell below coolant_warm_K
@@ -93,7 +92,8 @@ struct EmsDecision {
 class EmsModel {
  public:
   EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_supported = true);
-  void reset(double soc0);
+  /// Engine running, counters and the SOC integral cleared.
+  void reset();
   /// Decides the split for the next step of length dt_s [s]. Throws ModelDivergence on
   /// non-finite inputs or a start that exceeds max_crank_time_s.
   const EmsDecision& step(double dt_s, const EmsInputs& in);
