@@ -70,12 +70,72 @@ ARGS = {
     "architecture": choice("conventional", "p1_48v"),
     "thermal": choice("true", "false"),
     "order": lambda v, repo, config=None: v,  # Gauss-Seidel groups: checked by the stepper before step 0
+    "remote": lambda v, repo, config=None: remote_list(v),  # participants on another host
+    "remote_host": lambda v, repo, config=None: host(v),
+    "remote_user": lambda v, repo, config=None: word(v, "a user name"),
+    "remote_ssh_port": number(1, 65535, integer=True),
+    "remote_env_loader": lambda v, repo, config=None: absolute(v),
 }
+
+# the participants that may run on another host (the stepper and the recorder stay with the
+# master and the results folder); which exist depends on the architecture and `thermal`
+PARTICIPANTS = ("vehicle", "engine", "aftertreatment", "cooling", "ems", "emachine", "battery")
+SCENARIO_ARCHITECTURE = {"baseline_urban": "conventional", "hybrid_urban": "p1_48v"}
+
+
+def remote_list(v):
+    names = [p.strip() for p in v.split(",") if p.strip()]
+    for n in names:
+        if n not in PARTICIPANTS:
+            raise ValueError("'%s' is not a participant that can run remotely (%s)" % (n, ", ".join(PARTICIPANTS)))
+    if len(set(names)) != len(names):
+        raise ValueError("'%s' names a participant twice" % v)
+    return ",".join(names)
+
+
+def host(v):
+    if not v or not all(c.isalnum() or c in ".-:" for c in v):
+        raise ValueError("'%s' is not a host name or an IP address" % v)
+    return v
+
+
+def word(v, what):
+    if not v or not all(c.isalnum() or c in "._-" for c in v):
+        raise ValueError("'%s' is not %s" % (v, what))
+    return v
+
+
+def absolute(v):
+    if not os.path.isabs(v):
+        raise ValueError("'%s' is not an absolute path (a path on the remote host)" % v)
+    return v
+
+
+def check_remote(scenario, given):
+    """Cross-checks of the remote arguments (each one alone is checked above)."""
+    remote = [p for p in given.get("remote", "").split(",") if p]
+    if not remote:
+        extra = sorted(k for k in given if k.startswith("remote_"))
+        if extra:
+            sys.exit("twin: argument '%s' given without remote:=PARTICIPANTS" % extra[0])
+        return
+    if "remote_host" not in given:
+        sys.exit("twin: argument 'remote': remote_host:=ADDRESS is required")
+    arch = given.get("architecture", SCENARIO_ARCHITECTURE.get(scenario, "conventional"))
+    present = {"vehicle", "engine"}
+    if given.get("thermal", "true") == "true":
+        present |= {"aftertreatment", "cooling"}
+    if arch == "p1_48v":
+        present |= {"ems", "emachine", "battery"}
+    for n in remote:
+        if n not in present:
+            sys.exit("twin: argument 'remote': %s is not a participant of %s (architecture %s, thermal %s)"
+                     % (n, scenario, arch, given.get("thermal", "true")))
 
 
 def main():
     repo, scenario, pairs = sys.argv[1], sys.argv[2], sys.argv[3:]
-    out, seen = [], set()
+    out, seen, given = [], set(), {}
     config = None
     for p in pairs:  # the config folder first: the auxiliary sets live in it
         if p.startswith("config:="):
@@ -90,9 +150,11 @@ def main():
             sys.exit("twin: argument '%s' given twice" % name)
         seen.add(name)
         try:
-            out.append("%s:=%s" % (name, ARGS[name](value, repo, config)))
+            given[name] = ARGS[name](value, repo, config)
+            out.append("%s:=%s" % (name, given[name]))
         except ValueError as e:
             sys.exit("twin: argument '%s': %s" % (name, e))
+    check_remote(scenario, given)
     print("\n".join(out))
 
 

@@ -61,6 +61,25 @@ class LaunchArgs(unittest.TestCase):
         self.assertNotEqual(rc, 0)
         self.assertIn("name:=value", err)
 
+    def test_remote_participants(self):
+        """remote:=... names participants of this scenario and comes with its host."""
+        self.rejected("remote:=engine", "remote_host")
+        self.rejected("remote_host:=10.0.0.2", "without remote")
+        rc, _, err = check("remote:=battery", "remote_host:=10.0.0.2")  # baseline has no battery
+        self.assertNotEqual(rc, 0)
+        self.assertIn("battery is not a participant of baseline_urban", err)
+        rc, _, err = check("remote:=cooling", "remote_host:=h", "thermal:=false")
+        self.assertIn("cooling is not a participant", err)
+        rc, _, err = check("remote:=stepper", "remote_host:=h")
+        self.assertIn("'stepper' is not a participant that can run remotely", err)
+        rc, _, err = check("remote:=engine", "remote_host:=h;rm", )
+        self.assertIn("not a host name", err)
+        rc, _, err = check("remote:=engine", "remote_host:=h", "remote_env_loader:=env.sh")
+        self.assertIn("not an absolute path", err)
+        rc, out, _ = check("remote:=engine, cooling", "remote_host:=10.0.0.2", "remote_ssh_port:=2222")
+        self.assertEqual(rc, 0)
+        self.assertEqual(out, ["remote:=engine,cooling", "remote_host:=10.0.0.2", "remote_ssh_port:=2222"])
+
     def test_valid_arguments_pass_unchanged(self):
         args = ["ambient:=0", "engine:=1d", "solver:=tvd", "mode:=nodelets", "aux:=fan_only",
                 "cycle:=Urban", "rviz:=false"]
