@@ -25,6 +25,10 @@
   scripts/twin bench rates [--engines map] [--until S]  multi-rate stepping vs everything at the
                                     10 ms base step (cooling macro step, ATS model step 0.01 s in a
                                     config copy): fuel and temperature rises (issue 9, item 1)
+  scripts/twin bench cosim [--steps K]  the lock-step protocol alone: base steps per second for 3,
+                                    5 and 8 probe participants (no model), nodelets and nodes, one
+                                    rate / multi-rate / one Gauss-Seidel group per participant
+                                    (scripts/bench_cosim.py; K base steps per nodelets run, K/4 for nodes)
 Results: printed as a table and written to results/bench/<name>.json.
 """
 import argparse
@@ -34,6 +38,8 @@ import re
 import subprocess
 import sys
 import time
+
+import bench_cosim
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -303,13 +309,16 @@ def bench_rates(a):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient", "hybrid", "rates"])
+    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient", "hybrid", "rates", "cosim"])
     ap.add_argument("--engines", default="map,1d", help="ambient, hybrid: engine models, comma-separated")
     ap.add_argument("--jobs", type=int, default=1, help="ambient, hybrid: runs at a time")
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     ap.add_argument("--duration", type=float, default=1800.0,
                     help="engine: WHTC seconds to run (default the whole 1800 s)")
+    ap.add_argument("--steps", type=int, default=60000, help="cosim: base steps per nodelets run")
     a = ap.parse_args()
+    if a.what == "cosim":
+        return bench_cosim.bench_cosim(a, REPO)
     return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient, "hybrid": bench_hybrid, "rates": bench_rates}[a.what](a)
 
 

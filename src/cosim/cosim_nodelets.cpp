@@ -1,9 +1,11 @@
-// Nodelet forms of the stepper and the recorder (mode:=nodelets).
+// Nodelet forms of the stepper, the recorder and the protocol probe (mode:=nodelets).
 #include "cosim/participant_main.hpp"
+#include "cosim/probe_participant.hpp"
 #include "cosim/recorder.hpp"
 #include "cosim/stepper.hpp"
 
 HBT_PARTICIPANT_NODELET(hbt::cosim::Recorder, RecorderNodelet)
+HBT_PARTICIPANT_NODELET(hbt::cosim::ProbeParticipant, ProbeNodelet)
 
 namespace hbt::nodelets {
 class StepperNodelet : public nodelet::Nodelet {

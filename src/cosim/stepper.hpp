@@ -13,6 +13,8 @@
 // Gauss-Seidel groups stepped one after the other within a base step, e.g.
 // [[vehicle], [engine]]; absent = all in one group (Jacobi). Every participant except the
 // recorder must be in exactly one group; the recorder is always stepped last.
+// clock_period_s [s sim, default 0.1; 0 = every base step]: /clock is published at t = 0 and
+// then at most once per this simulated period (observers only: nothing of the protocol reads it).
 #pragma once
 #include <hybrid_bus_twin/StepStatus.h>
 #include <ros/ros.h>
@@ -52,6 +54,8 @@ class Stepper : public core::StepperTransport {
   ros::WallTimer timer_;
   std::unique_ptr<core::StepperCore> core_;
   bool progress_ = true;
+  core::Nanos clock_period_ns_ = 0, last_clock_ = 0;  // /clock sample period, last sent [ns sim]
+  bool clock_sent_ = false;
   std::string status_file_;
   std::chrono::steady_clock::time_point epoch_, last_print_;
 };
