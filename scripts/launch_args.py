@@ -133,6 +133,29 @@ def check_remote(scenario, given):
                      % (n, scenario, arch, given.get("thermal", "true")))
 
 
+def check_yaml_files(folder):
+    """Every YAML of the config folder (and its aux/ sets) parses and is not empty, before
+    roslaunch reads them (its errors name no file; an empty file loads nothing, silently)."""
+    import yaml
+    for sub in ("", "aux"):
+        d = os.path.join(folder, sub)
+        if not os.path.isdir(d):
+            continue
+        for name in sorted(os.listdir(d)):
+            if not name.endswith(".yaml"):
+                continue
+            path = os.path.join(d, name)
+            try:
+                with open(path, "rb") as f:
+                    doc = yaml.safe_load(f.read().decode("utf-8"))
+            except UnicodeDecodeError as e:
+                sys.exit("twin: config file %s: not UTF-8 text (byte %d): %s" % (path, e.start, e.reason))
+            except yaml.YAMLError as e:
+                sys.exit("twin: config file %s: not valid YAML: %s" % (path, str(e).replace("\n", " ")))
+            if not isinstance(doc, dict) or not doc:
+                sys.exit("twin: config file %s: %s" % (path, "empty" if not doc else "not a mapping of keys"))
+
+
 def main():
     repo, scenario, pairs = sys.argv[1], sys.argv[2], sys.argv[3:]
     out, seen, given = [], set(), {}
@@ -155,6 +178,7 @@ def main():
         except ValueError as e:
             sys.exit("twin: argument '%s': %s" % (name, e))
     check_remote(scenario, given)
+    check_yaml_files(config or os.path.join(repo, "config"))
     print("\n".join(out))
 
 

@@ -1,6 +1,7 @@
 #include "common/params.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
@@ -47,6 +48,29 @@ bool asDouble(const ParamValue& v, double& out) {
 
 }  // namespace
 
+namespace {
+thread_local ParamCapture* t_capture = nullptr;
+
+std::string number(double d) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", d);
+  return buf;
+}
+
+std::string valueText(const ParamSet::Entry& e) {
+  if (auto* pd = std::get_if<double*>(&e.ref)) return number(**pd);
+  if (auto* pi = std::get_if<int*>(&e.ref)) return std::to_string(**pi);
+  if (auto* pb = std::get_if<bool*>(&e.ref)) return **pb ? "true" : "false";
+  if (auto* ps = std::get_if<std::string*>(&e.ref)) return **ps;
+  std::string out = "[";
+  for (double d : **std::get_if<std::vector<double>*>(&e.ref)) out += (out.size() > 1 ? ", " : "") + number(d);
+  return out + "]";
+}
+}  // namespace
+
+ParamCapture::ParamCapture() : outer_(t_capture) { t_capture = this; }
+ParamCapture::~ParamCapture() { t_capture = outer_; }
+
 void applyParams(const ParamSet& ps, const ParamSource& src,
                  const std::vector<std::string>& ignore_prefixes) {
   const std::string& file = src.file;
@@ -92,6 +116,9 @@ void applyParams(const ParamSet& ps, const ParamSource& src,
       if (kv.first.rfind(p, 0) == 0) ignored = true;
     if (!ignored) throw InputError(file, kv.first, "unknown key (misspelt or not used by this model)");
   }
+  if (t_capture)
+    for (const auto& e : ps.entries())
+      t_capture->add({file, e.key, valueText(e), e.unit, src.values.count(e.key) > 0});
 }
 
 std::string describeParams(const ParamSet& ps) {

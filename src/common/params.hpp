@@ -63,4 +63,29 @@ void applyParams(const ParamSet& ps, const ParamSource& src,
 /// One line per parameter: "key [unit] = value  # doc" (for --help output and reports).
 std::string describeParams(const ParamSet& ps);
 
+/// One parameter as a model was configured with it: the file it was read from (or would have
+/// been), the key, the value (text: %.17g numbers, [a, b] lists), its unit, and whether the file
+/// set it (false: the model's default).
+struct ResolvedParam {
+  std::string file, key, value, unit;
+  bool from_file = false;
+};
+
+/// While a ParamCapture is alive, every applyParams() on the same thread appends the resolved
+/// value of each declared key to it (a participant wraps its configure() in one and writes the
+/// list beside the bag: what the run really used). Captures nest: the innermost one receives.
+class ParamCapture {
+ public:
+  ParamCapture();
+  ~ParamCapture();
+  ParamCapture(const ParamCapture&) = delete;
+  ParamCapture& operator=(const ParamCapture&) = delete;
+  const std::vector<ResolvedParam>& params() const { return params_; }
+  void add(ResolvedParam p) { params_.push_back(std::move(p)); }
+
+ private:
+  std::vector<ResolvedParam> params_;
+  ParamCapture* outer_ = nullptr;
+};
+
 }  // namespace hbt

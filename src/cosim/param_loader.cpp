@@ -64,7 +64,17 @@ void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::s
   ignore_prefixes.push_back("config_file");
   ignore_prefixes.push_back("loops/");  // engine loop switches (engine_ports.hpp), not model keys
   ignore_prefixes.push_back("cosim/");  // protocol keys read by the Participant base class
-  applyParams(ps, loadParamSource(pnh, "", file), ignore_prefixes);
+  const ParamSource src = loadParamSource(pnh, "", file);
+  std::size_t model_keys = 0;
+  for (const auto& kv : src.values) {
+    bool ignored = false;
+    for (const auto& p : ignore_prefixes) ignored = ignored || kv.first.rfind(p, 0) == 0;
+    model_keys += ignored ? 0 : 1;
+  }
+  // an empty (or unloaded) file would silently run the model on its built-in defaults
+  if (model_keys == 0 && !ps.entries().empty())
+    throw InputError(file, "", "sets no parameter of this model (empty file, or not loaded)");
+  applyParams(ps, src, ignore_prefixes);
 }
 
 double scenarioAmbient_K(const ros::NodeHandle& nh) {

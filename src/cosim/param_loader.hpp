@@ -19,7 +19,8 @@ ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
 /// Applies the private parameters of a participant (`pnh`) to a model's ParamSet: the one call a
 /// node makes. `file` = the YAML they came from; the node's own key `config_file`, the protocol
 /// keys `cosim/...` (e.g. cosim/macro_step_s, read by cosim::Participant) and any key starting
-/// with one of `ignore_prefixes` are not reported as unknown. Throws hbt::InputError.
+/// with one of `ignore_prefixes` are not reported as unknown. Throws hbt::InputError, also when
+/// the namespace holds no model key at all (an empty or unloaded file: defaults, unseen).
 void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::string& file,
                     std::vector<std::string> ignore_prefixes = {});
 

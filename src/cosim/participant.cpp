@@ -5,8 +5,11 @@
 
 #include <ros/master.h>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -61,7 +64,9 @@ class Participant::Hooks : public core::ParticipantHooks {
   explicit Hooks(Participant& p) : p_(p) {}
   void configure() override {
     p_.readMacroStep();
+    ParamCapture capture;  // every parameter the model binds, as resolved
     p_.configure();
+    p_.writeResolvedConfig(capture.params());
   }
   void publishOutputs(core::Nanos t) override { p_.publishOutputs(fromNanos(t)); }
   void step(core::Nanos t, double dt_s) override { p_.step(fromNanos(t), dt_s); }
@@ -116,6 +121,28 @@ std::string Participant::configFile() const {
   std::string f;
   pnh_.param<std::string>("config_file", f, pnh_.getNamespace() + " (rosparam)");
   return f;
+}
+
+void Participant::writeResolvedConfig(const std::vector<ResolvedParam>& params) const {
+  std::string out;
+  if (params.empty() || !nh_.getParam("/scenario/out_dir", out) || out.empty()) return;  // no model / not a scenario run
+  const std::string dir = out + "/resolved_config";
+  const std::string path = dir + "/" + name_ + ".csv";
+  ::mkdir(dir.c_str(), 0755);  // exists already when another participant made it first
+  std::ofstream f(path);
+  f << "# parameters of participant '" << name_ << "' as its model was configured: file, key, value,\n"
+    << "# unit, source (file = set by the file, default = the model's default)\n"
+    << "file,key,value,unit,source\n";
+  auto csv = [](const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  for (const auto& p : params)
+    f << csv(p.file) << "," << csv(p.key) << "," << csv(p.value) << "," << csv(p.unit) << ","
+      << (p.from_file ? "file" : "default") << "\n";
+  if (!f) throw InputError(path, "", "cannot write the resolved configuration");
 }
 
 void Participant::readMacroStep() {

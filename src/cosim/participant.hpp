@@ -46,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "common/params.hpp"
 #include "cosim/core/participant_core.hpp"
 #include "cosim/input_buffer.hpp"
 
@@ -126,6 +127,9 @@ class Participant {
   void onAnnounceTimer(const ros::WallTimerEvent&);
   void onArrival();
   void readMacroStep();
+  /// <out_dir>/resolved_config/<name>.csv: every parameter its configure() bound (file, key,
+  /// value, unit, set by the file or default); nothing outside a scenario (no /scenario/out_dir).
+  void writeResolvedConfig(const std::vector<ResolvedParam>& params) const;
 
   std::string name_;
   std::unique_ptr<Hooks> hooks_;

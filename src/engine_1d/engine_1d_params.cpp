@@ -99,41 +99,44 @@ void Engine1DConfig::declare(ParamSet& ps) {
          "factor on the Chen-Flynn constant and speed terms");
   ps.add("friction_to_coolant", friction_to_coolant, "-", 0.0, 1.0,
          "share of friction power rejected to the coolant");
-  ps.add("files/cylinder", cylinder_file, "cylinder model YAML (relative to the repo root)");
-  ps.add("files/turbo", turbo_file, "turbocharger YAML (relative to the repo root)");
-  ps.add("files/reference", reference_file, "reference map-engine YAML");
+  ps.add("files/cylinder", cylinder_file, "cylinder model YAML (relative to this file's folder)");
+  ps.add("files/turbo", turbo_file, "turbocharger YAML (relative to this file's folder)");
+  ps.add("files/reference", reference_file, "reference map-engine YAML (relative to this file's folder)");
   ps.setPrefix("");
 }
 
 Engine1DParams Engine1DParams::load(const std::string& root, const std::string& engine_file) {
+  const std::string f = resolvePath(root, engine_file);
+  return load(readYamlParams(f), f);
+}
+
+Engine1DParams Engine1DParams::load(const ParamSource& engine, const std::string& engine_file) {
   Engine1DParams p;
   {
-    const ParamSource src = readYamlParams(resolvePath(root, engine_file));
     ParamSet ps;
     p.engine.declare(ps);
-    applyParams(ps, src);
-    p.engine_source = src.file;
+    applyParams(ps, engine);
+    p.engine_source = engine.file;
   }
+  const auto cut = engine_file.find_last_of('/');  // sub-files: beside the engine YAML
+  const std::string folder = cut == std::string::npos ? "." : cut == 0 ? "/" : engine_file.substr(0, cut);
   {
-    const ParamSource src = readYamlParams(resolvePath(root, p.engine.cylinder_file));
+    const ParamSource src = readYamlParams(resolvePath(folder, p.engine.cylinder_file));
     ParamSet ps;
     p.cylinder.declare(ps);
     applyParams(ps, src, {"cylinder_rig/"});
   }
   p.applyCalibration();
+  p.cylinder.finalize(resolvePath(folder, p.engine.cylinder_file));
   {
-    const std::string f = resolvePath(root, p.engine.cylinder_file);
-    p.cylinder.finalize(f);
-  }
-  {
-    const ParamSource src = readYamlParams(resolvePath(root, p.engine.turbo_file));
+    const ParamSource src = readYamlParams(resolvePath(folder, p.engine.turbo_file));
     ParamSet ps;
     p.turbo.declare(ps, "turbo/");
     applyParams(ps, src);
     p.turbo.source = src.file;
   }
   {
-    const ParamSource src = readYamlParams(resolvePath(root, p.engine.reference_file));
+    const ParamSource src = readYamlParams(resolvePath(folder, p.engine.reference_file));
     ParamSet ps;
     p.reference.declare(ps);
     applyParams(ps, src);

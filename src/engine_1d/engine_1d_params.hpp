@@ -85,10 +85,11 @@ struct Engine1DConfig {
   double premixed_duration_scale = 1.0;  // x cylinder/combustion/premixed_duration_deg
   double friction_scale = 1.0;           // x Chen-Flynn A, C, D (B: peak-pressure term kept)
   double initial_turbo_speed_rpm = 40000.0;
-  // Files of the other models (relative to the repository root)
-  std::string cylinder_file = "config/engine_1d_cylinder.yaml";
-  std::string turbo_file = "config/engine_1d_turbo.yaml";
-  std::string reference_file = "config/engine_map.yaml";
+  // Files of the other models: relative to the folder of the engine YAML itself (so a copy of
+  // the config folder, launch argument config:=DIR, brings its own sub-files), or absolute
+  std::string cylinder_file = "engine_1d_cylinder.yaml";
+  std::string turbo_file = "engine_1d_turbo.yaml";
+  std::string reference_file = "engine_map.yaml";
 
   void declare(ParamSet& ps);  // keys "engine_1d/..."
 };
@@ -105,6 +106,10 @@ struct Engine1DParams {
   /// names; each file is applied with its own ParamSet, so errors name the file and the key.
   static Engine1DParams load(const std::string& repo_root,
                              const std::string& engine_file = "config/engine_1d.yaml");
+  /// The same from the engine's parameters already read (the ROS node: its private rosparam
+  /// namespace, loaded by the launch file from `engine_file`, like every participant); the
+  /// sub-files are read from the folder of `engine_file`.
+  static Engine1DParams load(const ParamSource& engine, const std::string& engine_file);
   /// Applies engine.calibration factors to the cylinder parameters (once, by load()). Callers
   /// filling the parameters themselves (ROS node) call it, then cylinder.finalize().
   void applyCalibration();

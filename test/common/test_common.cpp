@@ -125,6 +125,47 @@ TEST(Params, AppliesValuesAndNamesBadKeys) {
   EXPECT_NO_THROW(hbt::applyParams(ps, src, {"mas_"}));
 }
 
+TEST(Params, CaptureRecordsResolvedValuesAndTheirSource) {
+  double mass_kg = 15160.0, cd = 0.6;
+  std::vector<double> gears{3.4, 1.9};
+  bool retarder = true;
+  hbt::ParamSet ps;
+  ps.add("mass_kg", mass_kg, "kg", 1000.0, 60000.0, "curb mass");
+  ps.add("cd", cd, "-", 0.1, 2.0, "drag coefficient");
+  ps.add("gears", gears, "-", 0.1, 10.0, "ratios");
+  ps.add("retarder", retarder, "retarder fitted");
+  hbt::ParamSource src;
+  src.file = "config/vehicle.yaml";
+  src.set("mass_kg", 16000.5);
+  src.set("gears", std::vector<double>{3.36, 1.91, 1.42});
+  hbt::applyParams(ps, src);  // no capture alive: nothing recorded anywhere
+  hbt::ParamCapture outer;
+  {
+    hbt::ParamCapture inner;  // the innermost capture receives
+    hbt::applyParams(ps, src);
+    ASSERT_EQ(inner.params().size(), 4u);
+    const auto& p = inner.params();
+    EXPECT_EQ(p[0].file, "config/vehicle.yaml");
+    EXPECT_EQ(p[0].key, "mass_kg");
+    EXPECT_EQ(p[0].value, "16000.5");
+    EXPECT_EQ(p[0].unit, "kg");
+    EXPECT_TRUE(p[0].from_file);
+    EXPECT_EQ(p[1].key, "cd");
+    EXPECT_EQ(std::stod(p[1].value), 0.6);  // %.17g: the default, exactly
+    EXPECT_FALSE(p[1].from_file);
+    EXPECT_EQ(p[2].value, "[3.3599999999999999, 1.9099999999999999, 1.4199999999999999]");
+    EXPECT_TRUE(p[2].from_file);
+    EXPECT_EQ(p[3].value, "true");
+    EXPECT_FALSE(p[3].from_file);
+  }
+  EXPECT_TRUE(outer.params().empty());
+  hbt::applyParams(ps, src);  // the inner capture ended: back to the outer one
+  EXPECT_EQ(outer.params().size(), 4u);
+  src.set("mas_kg", 1.0);  // a rejected configuration records nothing
+  EXPECT_THROW(hbt::applyParams(ps, src), hbt::InputError);
+  EXPECT_EQ(outer.params().size(), 4u);
+}
+
 #include "common/yaml_params.hpp"
 
 TEST(YamlParams, FlattensNestedKeysAndNamesBadInput) {

@@ -2,6 +2,7 @@
 // state raises ModelDivergence naming the element; no NaN reaches the outputs.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -12,15 +13,27 @@ using namespace hbt::engine1d;
 using namespace hbt::engine1d::test;
 
 namespace {
-std::string writeVariant(const std::string& from, const std::string& to, const std::string& name) {
-  std::ifstream in(repoRoot() + "/config/engine_1d.yaml");
-  std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto pos = s.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  s.replace(pos, from.size(), to);
-  const std::string path = "/tmp/engine_1d_test_" + name + ".yaml";
-  std::ofstream(path) << s;
-  return path;
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+/// A copy of the config folder's four 1D-engine files in /tmp/engine_1d_test_<name>/, with
+/// `from` replaced by `to` in `file`; returns the path of the copy's engine_1d.yaml.
+std::string writeVariant(const std::string& from, const std::string& to, const std::string& name,
+                         const std::string& file = "engine_1d.yaml") {
+  const std::string dir = "/tmp/engine_1d_test_" + name;
+  std::filesystem::create_directories(dir);
+  for (const char* f : {"engine_1d.yaml", "engine_1d_cylinder.yaml", "engine_1d_turbo.yaml", "engine_map.yaml"}) {
+    std::string s = readFile(repoRoot() + "/config/" + f);
+    if (file == f) {
+      const auto pos = s.find(from);
+      EXPECT_NE(pos, std::string::npos) << from;
+      s.replace(pos, from.size(), to);
+    }
+    std::ofstream(dir + "/" + f) << s;
+  }
+  return dir + "/engine_1d.yaml";
 }
 }  // namespace
 
@@ -54,6 +67,23 @@ TEST(Engine1DErrors, UnknownKeyAndBadSolverAreRejected) {
   }
   const std::string h = writeVariant("cd_normal: [0.72, 0.70, 0.67", "cd_normal: [0.70, 0.67", "cd");
   EXPECT_THROW(Engine1DParams::load(repoRoot(), h), hbt::InputError);
+}
+
+TEST(Engine1DErrors, SubFilesAreReadBesideTheEngineFile) {
+  // a copy of the config folder (launch argument config:=DIR) uses its own cylinder file: a
+  // broken value there is reported with the copy's path, never replaced by the package's file
+  const std::string f = writeVariant("bore_m: 0.104", "bore_m: -0.104", "subfile", "engine_1d_cylinder.yaml");
+  const std::string cyl = f.substr(0, f.find_last_of('/')) + "/engine_1d_cylinder.yaml";
+  try {
+    Engine1DParams::load(repoRoot(), f);
+    FAIL() << "no InputError";
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.file(), cyl);
+    EXPECT_EQ(e.key(), "cylinder/geometry/bore_m");
+  }
+  // and an intact copy loads to exactly the package's parameters
+  const std::string g = writeVariant("bore_m: 0.104", "bore_m: 0.104", "subfile_same", "engine_1d_cylinder.yaml");
+  EXPECT_EQ(Engine1DParams::load(repoRoot(), g).cylinder.geometry.bore_m, defaultParams().cylinder.geometry.bore_m);
 }
 
 TEST(Engine1DErrors, DivergenceNamesTheElement) {

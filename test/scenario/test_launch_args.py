@@ -80,6 +80,33 @@ class LaunchArgs(unittest.TestCase):
         self.assertEqual(rc, 0)
         self.assertEqual(out, ["remote:=engine,cooling", "remote_host:=10.0.0.2", "remote_ssh_port:=2222"])
 
+    def test_config_files_empty_or_garbage(self):
+        """every YAML of the config folder must parse and hold keys: roslaunch would load an
+        empty file as nothing (the model on its defaults) and name no file for garbage"""
+        import shutil
+        import tempfile
+        tmp = tempfile.mkdtemp(prefix="hbt_cfg_")
+        try:
+            cfg = os.path.join(tmp, "config")
+            shutil.copytree(os.path.join(REPO, "config"), cfg, ignore=shutil.ignore_patterns("data"))
+            rc, _, err = check("config:=" + cfg)
+            self.assertEqual(rc, 0, err)
+            open(os.path.join(cfg, "cooling.yaml"), "w").close()
+            rc, _, err = check("config:=" + cfg)
+            self.assertNotEqual(rc, 0)
+            self.assertIn(os.path.join(cfg, "cooling.yaml") + ": empty", err)
+            with open(os.path.join(cfg, "cooling.yaml"), "wb") as f:
+                f.write(bytes(range(256)))
+            rc, _, err = check("config:=" + cfg)
+            self.assertIn(os.path.join(cfg, "cooling.yaml") + ": not UTF-8", err)
+            with open(os.path.join(cfg, "aux", "fan_only.yaml"), "w") as f:
+                f.write("aux: [unclosed\n")
+            shutil.copy(os.path.join(REPO, "config", "cooling.yaml"), cfg)
+            rc, _, err = check("config:=" + cfg)
+            self.assertIn(os.path.join(cfg, "aux", "fan_only.yaml") + ": not valid YAML", err)
+        finally:
+            shutil.rmtree(tmp)
+
     def test_valid_arguments_pass_unchanged(self):
         args = ["ambient:=0", "engine:=1d", "solver:=tvd", "mode:=nodelets", "aux:=fan_only",
                 "cycle:=Urban", "rviz:=false"]

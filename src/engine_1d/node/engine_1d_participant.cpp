@@ -9,7 +9,16 @@ namespace hbt::engine1d {
 void Engine1DParticipant::configure() {
   std::string pkg;
   nh_.param<std::string>("/scenario/package_dir", pkg, ".");
-  Engine1DParams p = Engine1DParams::load(pkg, configFile());
+  // like every participant: its YAML from the private namespace (the launch loaded it), less
+  // the node's own keys; the sub-files it names are read beside that YAML
+  ParamSource own = cosim::loadParamSource(pnh_, "", configFile());
+  for (auto it = own.values.begin(); it != own.values.end();) {
+    const std::string& k = it->first;
+    const bool node_key = k == "config_file" || k == "solver" || k.rfind("loops/", 0) == 0 || k.rfind("cosim/", 0) == 0;
+    it = node_key ? own.values.erase(it) : std::next(it);
+  }
+  if (own.values.empty()) throw InputError(configFile(), "engine_1d", "no parameters: the file is empty or was not loaded");
+  Engine1DParams p = Engine1DParams::load(own, configFile());
   std::string solver;
   if (pnh_.getParam("solver", solver) && !solver.empty()) {
     p.engine.solver = solver;

@@ -7,8 +7,10 @@
 //                        /aftertreatment/state (back-pressure -> turbine-outlet boundary) when
 //                        loops/cooling and loops/aftertreatment are set (engine_ports.hpp).
 // Outputs (stamped t_k): /engine/state, /engine/exhaust, /engine/heat (same as the map engine).
-// Parameters: `config_file` = config/engine_1d.yaml, read from disk with the files it names
-// (cylinder, turbo, reference map) so that errors name each file and key; `solver` (fsm|tvd,
+// Parameters: private namespace = config/engine_1d.yaml (loaded by the launch file, as for every
+// participant; `config_file` names it); the files it names (cylinder, turbo, reference map) are
+// read from its folder, so that config:=DIR uses DIR's copies and errors name each file and
+// key; `solver` (fsm|tvd,
 // optional) overrides engine_1d/solver. Without the aftertreatment and cooling nodes the
 // back-pressure comes from the model's documented constant-orifice default and the coolant is
 // at the model's thermostat temperature (Engine1DInputs::coolant_T_K, 363.15 K).

@@ -23,7 +23,8 @@ for k,v in ov.items():
   f,p=k.split(':',1)
   if f=='e': setp(E_['engine_1d'],p,v)
   else: setp(C_['cylinder'],p,v)
-E_['engine_1d']['files']['cylinder']=f'{d}/cyl.yaml'
+E_['engine_1d']['files']['cylinder']=f'{d}/cyl.yaml'  # the others from the repo's config/
+E_['engine_1d']['files']['turbo']=f'{R}/config/engine_1d_turbo.yaml'; E_['engine_1d']['files']['reference']=f'{R}/config/engine_map.yaml'
 yaml.safe_dump(E_,open(f'{d}/engine.yaml','w')); yaml.safe_dump(C_,open(f'{d}/cyl.yaml','w'))
 json.dump(ov,open(f'{d}/overrides.json','w'),indent=1)
 mot=subprocess.run(['nice',f'{B}/engine_1d_motoring','--root',R,'--config',f'{d}/engine.yaml','--out',f'{d}/motoring.csv'],capture_output=True,text=True)
