@@ -129,6 +129,13 @@ class Rejected(SpecCase):
         for w in ("jobs", "vary/ambient", "battery.yaml:x"):
             self.assertIn(w, r.stderr)
 
+    def test_twin_checks_before_setup(self):
+        p = self.spec(self.with_(vary={"ambient": [500]}))
+        r = subprocess.run([os.path.join(REPO, "scripts", "twin"), "sweep", p], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("%s: vary/ambient: 500 is outside" % p, r.stderr)
+        self.assertNotIn("building", r.stdout + r.stderr)  # stopped before apt-get and the build
+
     def test_out_folder_must_be_a_sweeps(self):
         os.makedirs(os.path.join(self.tmp, "other"))
         open(os.path.join(self.tmp, "other", "keep.txt"), "w").close()
