@@ -89,6 +89,7 @@ class Participant::Hooks : public core::ParticipantHooks {
     if (p_.cmd_sub_.getNumPublishers() == 0) os << " /sim/step not connected;";
     return os.str();
   }
+  void topicsAnnounced(const std::vector<std::string>& topics) override { p_.topicsAnnounced(topics); }
   void sendStatus(const core::Status& c) override {
     StepStatus s;
     s.header.stamp = fromNanos(c.t);
@@ -191,7 +192,7 @@ void Participant::onCommand(const StepCommand::ConstPtr& m) {
   c.dt_s = m->dt_s;
   c.group = m->group;
   c.reason = m->reason;
-  if (m->command == StepCommand::START) {
+  if (m->command == StepCommand::START || m->command == StepCommand::SYNC) {  // SYNC: the table so far
     c.table.topics = m->topics;
     c.table.topic_multiple = m->topic_multiple;
     c.table.topic_group = m->topic_group;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include <ros/names.h>
+
 #include "common/errors.hpp"
 
 namespace hbt::cosim {
@@ -50,9 +52,9 @@ void Recorder::configure() {
   const std::string where = "recorder parameters (launch file)";
   if (!pnh_.getParam("bag_file", bag_file) || bag_file.empty())
     throw InputError(where, "bag_file", "missing");
-  if (!pnh_.getParam("topics", topics) || topics.empty())
-    throw InputError(where, "topics", "missing or empty list");
-  std::sort(topics.begin(), topics.end());
+  record_all_ = !pnh_.hasParam("topics");
+  if (!record_all_ && (!pnh_.getParam("topics", topics) || topics.empty()))
+    throw InputError(where, "topics", "not a list of topic names, or empty (leave it out to record every output)");
   double period_s = 0.0;
   pnh_.param("record_period_s", period_s, 0.0);
   if (!(period_s >= 0.0 && period_s <= 3600.0))
@@ -68,10 +70,24 @@ void Recorder::configure() {
   } catch (const std::exception& e) {
     throw InputError(where, "bag_file", std::string("cannot open '") + bag_file + "': " + e.what());
   }
+  for (const auto& t : topics) addTopic(t);
+}
+
+void Recorder::addTopic(const std::string& topic) {
+  auto in = std::make_unique<RawInput>(nh_, topic, arrivalCallback());
+  topics_.push_back(in.get());
+  addCustomInput(std::move(in));
+  // written in a fixed order, whatever the order of discovery: sorted by name
+  std::sort(topics_.begin(), topics_.end(), [](const RawInput* a, const RawInput* b) { return a->topic() < b->topic(); });
+}
+
+void Recorder::topicsAnnounced(const std::vector<std::string>& topics) {
+  if (!record_all_) return;
   for (const auto& t : topics) {
-    auto in = std::make_unique<RawInput>(nh_, t, arrivalCallback());
-    topics_.push_back(in.get());
-    addCustomInput(std::move(in));
+    const std::string resolved = ros::names::resolve(nh_.getNamespace(), t);
+    const bool known = std::any_of(topics_.begin(), topics_.end(),
+                                   [&](const RawInput* in) { return in->resolvedTopic() == resolved; });
+    if (!known) addTopic(t);
   }
 }
 

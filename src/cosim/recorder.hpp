@@ -9,7 +9,9 @@
 // readable. Topics are recorded type-erased (topic_tools::ShapeShifter), so the recorder does not
 // depend on the message types.
 //
-// Parameters (private): bag_file [path], topics [list of topic names], record_period_s [s]
+// Parameters (private): bag_file [path], topics [list of topic names; absent = every output
+// topic the participants announced: learnt from the stepper's SYNC table, so a new participant
+// is recorded without touching the launch file], record_period_s [s]
 // (0 = every macro step; otherwise the states stamped at multiples of the period are written,
 // always including t = 0 and the final state).
 #pragma once
@@ -34,16 +36,19 @@ class Recorder : public Participant {
   void publishOutputs(const ros::Time& t) override {}
   void step(const ros::Time& t, double dt_s) override;
   bool readyToClose(const ros::Time& t_end) const override;
+  void topicsAnnounced(const std::vector<std::string>& topics) override;
   void close(const ros::Time& t_end, bool aborted) override;
 
  private:
   class RawInput;
   void writeAt(const ros::Time& t);
+  void addTopic(const std::string& topic);
   std::unique_ptr<rosbag::Bag> bag_;
   std::vector<RawInput*> topics_;  // sorted by name; owned by the participant base
   ros::Time last_written_;
   uint64_t period_ns_ = 0;
   bool wrote_any_ = false;
+  bool record_all_ = false;  // no `topics` parameter: record every announced output
 };
 
 }  // namespace hbt::cosim

@@ -11,6 +11,19 @@ FakeParticipant::FakeParticipant(Bus& bus, std::string name, std::vector<std::st
   }
 }
 
+void FakeParticipant::topicsAnnounced(const std::vector<std::string>& topics) {
+  announced_tables.push_back(topics);
+  if (!record_all) return;
+  for (const auto& topic : topics) {
+    bool known = false;
+    for (const auto& in : inputs) known = known || in->resolvedTopic() == topic;
+    if (known) continue;
+    inputs.push_back(std::make_unique<FakeInput>(topic, [this] { core.onArrival(); }));
+    bus_.subscribers[topic].push_back(inputs.back().get());
+    core.addInput(inputs.back().get());
+  }
+}
+
 void FakeParticipant::configure() {
   if (faults.configure_throws) throw std::runtime_error("cfg.yaml: key 'mass_kg': must be > 0");
   for (auto& in : inputs) core.addInput(in.get());

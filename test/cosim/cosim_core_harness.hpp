@@ -81,6 +81,10 @@ class FakeParticipant : public ParticipantHooks {
   void close(Nanos t_end, bool aborted) override;
   bool readyToClose(Nanos t_end) const override;
   std::string missingLinks() const override { return faults.missing_links; }
+  /// record_all (a recorder without a topic list): subscribes to every announced topic.
+  void topicsAnnounced(const std::vector<std::string>& topics) override;
+  bool record_all = false;
+  std::vector<std::vector<std::string>> announced_tables;  // topics of each SYNC seen
   void sendStatus(const Status& s) override;
   void logError(const std::string&) override {}
   void command(const Command& c);

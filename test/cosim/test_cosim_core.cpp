@@ -67,6 +67,31 @@ TEST(CosimCore, NormalRunEndsAtUntilWithEveryStampRecorded) {
   EXPECT_EQ(s.stepCommands(), 5u);   // one group: one STEP per base step (Jacobi as before)
 }
 
+TEST(CosimCore, RecorderWithoutTopicListRecordsEveryAnnouncedOutput) {
+  // the SYNC table lists every output once all have announced; a recorder without a topic list
+  // subscribes from it before START and records exactly what one given the full list records
+  Bus listed;
+  addPair(listed);
+  listed.addRecorder({"/a/out", "/b/out"});
+  listed.run(config({"a", "b", "recorder"}, 0.05));
+  Bus all;
+  addPair(all);
+  all.addRecorder({}).record_all = true;
+  all.run(config({"a", "b", "recorder"}, 0.05));
+  ASSERT_TRUE(all.completed);
+  EXPECT_FALSE(all.stepper->aborted());
+  const auto& r = all.get("recorder");
+  ASSERT_FALSE(r.announced_tables.empty());
+  EXPECT_EQ(r.announced_tables.front(), (std::vector<std::string>{"/a/out", "/b/out"}));
+  const auto& ref = listed.get("recorder");
+  ASSERT_EQ(r.records.size(), ref.records.size());
+  for (std::size_t i = 0; i < r.records.size(); ++i) {
+    EXPECT_EQ(r.records[i].t, ref.records[i].t);
+    EXPECT_EQ(r.records[i].read, ref.records[i].read);  // both topics, the same stamps
+    EXPECT_EQ(r.records[i].read.size(), 2u);
+  }
+}
+
 TEST(CosimCore, EndsByFinishedOnly) {
   Bus bus;
   Faults fa;

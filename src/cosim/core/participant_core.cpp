@@ -110,6 +110,12 @@ void ParticipantCore::onCommand(const Command& c) {
     case Cmd::Sync: {
       if (failed_) { report(St::Error, c.step, 0, error_); return; }
       if (!configured_ || !checkPeriod(c.dt_s)) return;
+      try {
+        h_.topicsAnnounced(c.table.topics);
+      } catch (const std::exception& e) {
+        fail(std::string("subscribing to the announced topics failed: ") + e.what());
+        return;
+      }
       const std::string missing = h_.missingLinks();
       report(missing.empty() ? St::Ready : St::Waiting, c.step, 0, missing);
       return;

@@ -136,6 +136,7 @@ void StepperCore::sendSync() {
   c.command = Cmd::Sync;
   c.step = sync_round_;
   c.dt_s = cfg_.dt_s;
+  fillTable(c.table);  // everyone has announced: observers learn the topics to read from it
   tr_.sendCommand(c);
 }
 
@@ -143,18 +144,23 @@ void StepperCore::sendStart() {
   Command c;
   c.command = Cmd::Start;
   c.dt_s = cfg_.dt_s;
+  fillTable(c.table);
+  tr_.sendCommand(c);
+}
+
+void StepperCore::fillTable(Table& table) const {
+  Table& t = table;
   for (const auto& n : cfg_.participants) {
-    const Peer& p = peers_[n];
-    c.table.participants.push_back(n);
-    c.table.participant_multiple.push_back(p.multiple);
-    c.table.participant_group.push_back(p.group);
+    const Peer& p = peers_.at(n);
+    t.participants.push_back(n);
+    t.participant_multiple.push_back(p.multiple);
+    t.participant_group.push_back(p.group);
     for (const auto& topic : p.outputs) {
-      c.table.topics.push_back(topic);
-      c.table.topic_multiple.push_back(p.multiple);
-      c.table.topic_group.push_back(p.group);
+      t.topics.push_back(topic);
+      t.topic_multiple.push_back(p.multiple);
+      t.topic_group.push_back(p.group);
     }
   }
-  tr_.sendCommand(c);
 }
 
 void StepperCore::beginStep(double wall_s) {

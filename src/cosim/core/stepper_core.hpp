@@ -8,7 +8,10 @@
 //            topic published by two participants ABORTs the run here, before step 0.
 //  Sync      SYNC rounds until one round in which every participant answered READY (with its
 //            step multiple); then START with the table (topic -> producer multiple and group,
-//            participant -> multiple and group) and step 0.
+//            participant -> multiple and group) and step 0. Each SYNC carries the table as
+//            known so far: its topics are final (everyone has announced), so an observer that
+//            records "everything" (the recorder without a topic list) subscribes from it and
+//            answers WAITING until connected; multiples and groups are final only in START.
 //  Stepping  base step k (t_k = k * dt): /clock t_k, then for each group in order the STEP(k, g)
 //            to its participants due at k (k % multiple == 0), waiting for all their DONE(k) or
 //            FINISHED(k) before the next group. After the last group: t_{k+1}; the run ends with
@@ -94,6 +97,7 @@ class StepperCore {
   std::string missing(bool (*pred)(const Peer&)) const;
   void sendSync();
   void sendStart();
+  void fillTable(Table& t) const;
   void beginStep(double wall_s);
   void commandNextGroup(double wall_s);
   void finish(bool aborted, const std::string& reason, double wall_s);
