@@ -150,7 +150,7 @@ void Participant::diagnose(core::Nanos t, bool final) {
     if (!diag_.due(t)) return;
   }
   core::DiagStatus st = diag_.status(t, final, core_.cpuSeconds());
-  diagnosticValues(t, st.values);
+  if (core_.configured()) diagnosticValues(t, st.values);  // not on a half-built model
   auto arr = boost::make_shared<diagnostic_msgs::DiagnosticArray>();
   arr->header.stamp = fromNanos(t);
   arr->status.resize(1);

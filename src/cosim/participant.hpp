@@ -144,7 +144,8 @@ class Participant {
   /// `if (w.update(t_ns, condition)) w.setMessage(...)`. Model state only (deterministic).
   virtual void checkWarnings(core::Nanos t) {}
   /// Adds this participant's key/values (solver sub-steps, temperatures ...) to a status of the
-  /// state stamped t (called only when a status is published).
+  /// state stamped t (called only when a status is published, and only once configure() succeeded:
+  /// the final status of a participant that failed to configure has the base keys only).
   virtual void diagnosticValues(core::Nanos t, std::vector<core::KeyValue>& kv) {}
   /// The final status, built and published at FINISH/ABORT just before close() is called.
   const diagnostic_msgs::DiagnosticArray& finalDiagnostics() const { return final_diag_; }
