@@ -7,6 +7,8 @@ alone (analysed by header.stamp).
       launch arguments, DIR/status.json of the stepper, DIR/stops.csv), then reports from the bag
   postprocess.py --bag BAG [--out DIR]                   scripts/twin report: the same report from
       any bag a run wrote (default DIR = the bag's folder); identical output
+The participants' warnings (summary key `warnings`) and step compute times (report.md only) come
+from diagnostics.bag beside the bag (scripts/diagnostics.py); without it the report says so.
 Exit status: 0 if the run completed, 1 if it was aborted (the message names the failing node).
 
 Fuel: diesel, density 0.835 kg/L at 15 degC (EN 590 allows 0.820-0.845; VECTO's reference fuel
@@ -21,6 +23,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import diagnostics  # noqa: E402
 import ledger  # noqa: E402
 import thermal  # noqa: E402
 import hybrid  # noqa: E402
@@ -210,14 +213,14 @@ def plots(out, data):
     return files
 
 
-def report(out, s, status, files):
+def report(out, s, status, files, diag_lines=()):
     lines = ["# Run report: %s" % s["scenario"], ""]
     lines.append("Status: **%s**%s" % (status["status"], (" - " + status["message"]) if status["message"] else ""))
     lines.append("")
     lines.append("| quantity | value |")
     lines.append("|---|---|")
     for k, v in s.items():
-        if isinstance(v, dict):
+        if isinstance(v, (dict, list)):
             continue
         lines.append("| %s | %s |" % (k, ("%.6g" % v) if isinstance(v, float) else v))
     lines.append("")
@@ -233,6 +236,7 @@ def report(out, s, status, files):
                 k, fuel[k], 100 * fuel[k] / tot_f if tot_f > 0 else 0, time[k],
                 100 * time[k] / tot_t if tot_t > 0 else 0))
         lines.append("")
+    lines += list(diag_lines)
     if s.get("sim_time_s"):
         lines.append("Wall/simulated time ratio: %.4f" % (s["wall_time_s"] / s["sim_time_s"]))
     lines.append("")
@@ -254,6 +258,10 @@ def report_from_bag(bag, out, baseline=None):
     status = info["status"]
     data = read_bag(bag)
     s = summarise(info["scenario"], info["args"], status, data, info.get("stops_csv", ""))
+    nodes = diagnostics.read_diagnostics(bag)
+    warnings = diagnostics.warnings_list(nodes) if nodes is not None else None
+    if warnings is not None:
+        s["warnings"] = warnings
     if baseline:
         with open(baseline) as fh:
             pct = hybrid.saving(json.load(fh), s)
@@ -264,7 +272,7 @@ def report_from_bag(bag, out, baseline=None):
         json.dump(s, fh, indent=2)
         fh.write("\n")
     files = plots(out, data)
-    report(out, s, status, files)
+    report(out, s, status, files, diagnostics.report_lines(nodes, warnings))
     return status, s
 
 
@@ -299,7 +307,9 @@ def main():
         print("twin: run FAILED: %s" % status["message"], file=sys.stderr)
         return 1
     print("twin: done: %s" % ", ".join("%s=%s" % (k, ("%.4g" % v) if isinstance(v, float) else v)
-                                      for k, v in s.items() if not isinstance(v, dict)))
+                                      for k, v in s.items() if not isinstance(v, (dict, list))))
+    for w in s.get("warnings", []):
+        print("twin: warning from %s at t = %.2f s: %s: %s" % (w["node"], w["first_time_s"], w["warning"], w["message"]))
     return 0
 
 

@@ -4,9 +4,11 @@
 #include <boost/make_shared.hpp>
 
 #include <ros/master.h>
+#include <unistd.h>
 
 #include <sys/stat.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -14,6 +16,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "cosim/param_loader.hpp"
 
 namespace hbt::cosim {
 
@@ -64,14 +67,29 @@ class Participant::Hooks : public core::ParticipantHooks {
   explicit Hooks(Participant& p) : p_(p) {}
   void configure() override {
     p_.readMacroStep();
+    p_.readDiagnosticsParams();
     ParamCapture capture;  // every parameter the model binds, as resolved
     p_.configure();
     p_.writeResolvedConfig(capture.params());
   }
-  void publishOutputs(core::Nanos t) override { p_.publishOutputs(fromNanos(t)); }
-  void step(core::Nanos t, double dt_s) override { p_.step(fromNanos(t), dt_s); }
+  void publishOutputs(core::Nanos t) override {
+    p_.publishOutputs(fromNanos(t));
+    p_.diagnose(t, false);
+  }
+  void step(core::Nanos t, double dt_s) override {
+    const auto w0 = std::chrono::steady_clock::now();
+    p_.step(fromNanos(t), dt_s);
+    p_.diag_.addStepTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count());
+  }
   bool finished() const override { return p_.finished(); }
-  void close(core::Nanos t, bool aborted) override { p_.close(fromNanos(t), aborted); }
+  void close(core::Nanos t, bool aborted) override {
+    try {
+      p_.diagnose(t, true);
+    } catch (const std::exception& e) {
+      ROS_ERROR_STREAM(p_.name_ << ": final diagnostics failed: " << e.what());
+    }
+    p_.close(fromNanos(t), aborted);
+  }
   bool readyToClose(core::Nanos t) const override { return p_.readyToClose(fromNanos(t)); }
   void logError(const std::string& m) override { ROS_ERROR_STREAM(m); }
   std::string missingLinks() const override {
@@ -86,6 +104,10 @@ class Participant::Hooks : public core::ParticipantHooks {
         os << " output " << pub.getTopic() << " has " << pub.getNumSubscribers() << "/" << want
            << " subscribers connected;";
     }
+    const auto d = subs.find(p_.diag_pub_.getTopic());  // /diagnostics: the recorder, viewers
+    if (d != subs.end() && p_.diag_pub_.getNumSubscribers() < d->second.size())
+      os << " output " << p_.diag_pub_.getTopic() << " has " << p_.diag_pub_.getNumSubscribers()
+         << "/" << d->second.size() << " subscribers connected;";
     if (p_.cmd_sub_.getNumPublishers() == 0) os << " /sim/step not connected;";
     return os.str();
   }
@@ -117,6 +139,40 @@ Participant::Participant(ros::NodeHandle nh, ros::NodeHandle pnh, std::string na
       core_(name_, *hooks_) {}
 
 Participant::~Participant() = default;
+
+void Participant::readDiagnosticsParams() {
+  std::string file = "/scenario/diagnostics (rosparam)";
+  nh_.param<std::string>("/scenario/diagnostics_file", file, file);
+  ParamSet ps;
+  diag_params_.declare(ps);
+  applyParams(ps, loadParamSource(nh_, "/scenario/diagnostics", file));
+  diag_params_.validate(file);
+  diag_.setPeriod(core::toNanos(diag_params_.period_s));
+}
+
+void Participant::diagnose(core::Nanos t, bool final) {
+  if (!final) {
+    checkWarnings(t);
+    if (!diag_.due(t)) return;
+  }
+  core::DiagStatus st = diag_.status(t, final, core_.cpuSeconds());
+  if (core_.configured()) diagnosticValues(t, st.values);  // not on a half-built model
+  auto arr = boost::make_shared<diagnostic_msgs::DiagnosticArray>();
+  arr->header.stamp = fromNanos(t);
+  arr->status.resize(1);
+  diagnostic_msgs::DiagnosticStatus& s = arr->status[0];
+  s.level = st.level;
+  s.name = name_;
+  s.message = st.message;
+  s.hardware_id = host_;
+  s.values.resize(st.values.size());
+  for (std::size_t i = 0; i < st.values.size(); ++i) {
+    s.values[i].key = st.values[i].key;
+    s.values[i].value = st.values[i].value;
+  }
+  if (final) final_diag_ = *arr;
+  diag_pub_.publish(arr);
+}
 
 std::string Participant::configFile() const {
   std::string f;
@@ -166,6 +222,9 @@ void Participant::readMacroStep() {
 void Participant::start() {
   std::lock_guard<std::recursive_mutex> lock(mutex_);
   status_pub_ = nh_.advertise<StepStatus>("/sim/status", 100);
+  diag_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 100);
+  char host[256] = {0};
+  host_ = gethostname(host, sizeof host - 1) == 0 ? host : "localhost";
   cmd_sub_ = nh_.subscribe<StepCommand>("/sim/step", 100, &Participant::onCommand, this,
                                         ros::TransportHints().tcpNoDelay());
   core_.start();

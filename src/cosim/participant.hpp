@@ -36,7 +36,20 @@
 //  6. FINISH / ABORT: close() flushes files (FINISH waits for readyToClose()); answers CLOSED.
 // Any exception thrown by the model is reported as ERROR with the participant's name and the
 // message; the stepper then aborts the run.
+//
+// Diagnostics (README "Diagnostics"; ROS-free part core/diagnostics.hpp): every participant
+// publishes a diagnostic_msgs/DiagnosticArray with one DiagnosticStatus (name = participant name,
+// hardware_id = host) on /diagnostics at the first state at or after every `period_s` of
+// simulated time and a final one at close() (key final = true): the wall compute time of its
+// step() calls (mean/max over the window and over the run), its CPU time, the subclass's own
+// key/values (diagnosticValues()) and its warnings (addWarning() in configure(), judged in
+// checkWarnings() after every step and at t_0) with the simulated time of their first raise.
+// /diagnostics is an output of the link check (every subscriber connected before START) but no
+// lock-step topic: nothing steps on it and it is not in run.bag (the recorder writes it to
+// diagnostics.bag). Parameters: /scenario/diagnostics (config/diagnostics.yaml, file named by
+// /scenario/diagnostics_file), validated whole by every participant; absent = the defaults.
 #pragma once
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <hybrid_bus_twin/StepCommand.h>
 #include <hybrid_bus_twin/StepStatus.h>
 #include <ros/ros.h>
@@ -47,6 +60,8 @@
 #include <vector>
 
 #include "common/params.hpp"
+#include "cosim/core/diagnostics.hpp"
+#include "cosim/core/diagnostics_params.hpp"
 #include "cosim/core/participant_core.hpp"
 #include "cosim/input_buffer.hpp"
 
@@ -122,6 +137,23 @@ class Participant {
   /// Reads only, publishes nothing that others step on (the recorder): Jacobi reads, last group.
   void setObserver(bool o) { core_.setObserver(o); }
 
+  // --- diagnostics (see the header comment) ---
+  /// Thresholds and period of config/diagnostics.yaml (read before configure()).
+  const core::DiagnosticsParams& diagnosticsParams() const { return diag_params_; }
+  /// Declares a warning (in configure()): raised when its condition held for on_delay_s [s].
+  core::Warning& addWarning(const std::string& name, double on_delay_s) {
+    return diag_.addWarning(name, on_delay_s);
+  }
+  /// Judges the warnings from the state just published, stamped t (after every step and at t_0):
+  /// `if (w.update(t_ns, condition)) w.setMessage(...)`. Model state only (deterministic).
+  virtual void checkWarnings(core::Nanos t) {}
+  /// Adds this participant's key/values (solver sub-steps, temperatures ...) to a status of the
+  /// state stamped t (called only when a status is published, and only once configure() succeeded:
+  /// the final status of a participant that failed to configure has the base keys only).
+  virtual void diagnosticValues(core::Nanos t, std::vector<core::KeyValue>& kv) {}
+  /// The final status, built and published at FINISH/ABORT just before close() is called.
+  const diagnostic_msgs::DiagnosticArray& finalDiagnostics() const { return final_diag_; }
+
   ros::NodeHandle nh_, pnh_;
 
  private:
@@ -133,14 +165,21 @@ class Participant {
   /// <out_dir>/resolved_config/<name>.csv: every parameter its configure() bound (file, key,
   /// value, unit, set by the file or default); nothing outside a scenario (no /scenario/out_dir).
   void writeResolvedConfig(const std::vector<ResolvedParam>& params) const;
+  void readDiagnosticsParams();
+  /// After the state stamped t was published: warnings, then a status if one is due (or final).
+  void diagnose(core::Nanos t, bool final);
 
   std::string name_;
   std::unique_ptr<Hooks> hooks_;
   core::ParticipantCore core_;
   std::vector<std::unique_ptr<InputBase>> inputs_;
   std::vector<ros::Publisher> outputs_;
-  ros::Publisher status_pub_;
+  ros::Publisher status_pub_, diag_pub_;
   ros::Subscriber cmd_sub_;
+  core::DiagnosticsParams diag_params_;
+  core::Diagnostics diag_;
+  diagnostic_msgs::DiagnosticArray final_diag_;
+  std::string host_;
   ros::WallTimer announce_timer_;
   std::recursive_mutex mutex_;
 };

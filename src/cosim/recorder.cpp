@@ -71,6 +71,28 @@ void Recorder::configure() {
     throw InputError(where, "bag_file", std::string("cannot open '") + bag_file + "': " + e.what());
   }
   for (const auto& t : topics) addTopic(t);
+  std::string diag_file;
+  if (pnh_.getParam("diagnostics_bag_file", diag_file) && !diag_file.empty()) {
+    std::vector<std::string> from;
+    pnh_.getParam("diagnostics_from", from);
+    for (const auto& n : from)
+      if (n != name()) diag_waiting_.insert(n);
+    pnh_.param("diagnostics_wait_s", diag_wait_s_, 2.0);
+    if (!(diag_wait_s_ >= 0.0 && diag_wait_s_ <= 60.0))
+      throw InputError(where, "diagnostics_wait_s", "must be in [0, 60] s");
+    diag_bag_ = std::make_unique<rosbag::Bag>();
+    try {
+      diag_bag_->open(diag_file, rosbag::bagmode::Write);
+    } catch (const std::exception& e) {
+      throw InputError(where, "diagnostics_bag_file", "cannot open '" + diag_file + "': " + e.what());
+    }
+    diag_sub_ = nh_.subscribe<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1000,
+                                                               &Recorder::onDiagnostics, this);
+    auto arrive = arrivalCallback();
+    diag_timer_ = nh_.createWallTimer(ros::WallDuration(0.2), [this, arrive](const ros::WallTimerEvent&) {
+      if (diag_wait_since_ >= 0.0) arrive();
+    });
+  }
 }
 
 void Recorder::addTopic(const std::string& topic) {
@@ -91,6 +113,32 @@ void Recorder::topicsAnnounced(const std::vector<std::string>& topics) {
   }
 }
 
+void Recorder::writeDiagnostics(const diagnostic_msgs::DiagnosticArray& m) {
+  const ros::Time t = m.header.stamp.isZero() ? ros::Time(0, 1) : m.header.stamp;  // rosbag refuses 0
+  diag_bag_->write("/diagnostics", t, m);
+}
+
+void Recorder::onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+  if (!diag_bag_) return;
+  bool own_final = false, final_arrived = false;
+  for (const auto& s : m->status) {
+    bool final = false;
+    for (const auto& kv : s.values)
+      if (kv.key == "final") final = kv.value == "true";
+    if (final && s.name == name()) own_final = true;  // written by close() itself
+    if (final && diag_waiting_.erase(s.name)) final_arrived = true;
+  }
+  if (!own_final) writeDiagnostics(*m);
+  if (final_arrived) arrivalCallback()();
+}
+
+bool Recorder::diagnosticsComplete() const {
+  if (!diag_bag_ || diag_waiting_.empty()) return true;
+  const double now = ros::WallTime::now().toSec();
+  if (diag_wait_since_ < 0.0) diag_wait_since_ = now;
+  return now - diag_wait_since_ > diag_wait_s_;
+}
+
 void Recorder::step(const ros::Time& t, double) {
   if (period_ns_ == 0 || t.toNSec() % period_ns_ == 0) writeAt(t);
 }
@@ -105,14 +153,29 @@ void Recorder::writeAt(const ros::Time& t) {
 bool Recorder::readyToClose(const ros::Time& t_end) const {
   for (RawInput* in : topics_)
     if (!in->readyFor(t_end.toNSec())) return false;
-  return true;
+  return diagnosticsComplete();
 }
 
 void Recorder::close(const ros::Time& t_end, bool aborted) {
-  if (!bag_) return;
-  if (!aborted && (!wrote_any_ || last_written_ < t_end) && readyToClose(t_end)) writeAt(t_end);
-  bag_->close();
-  bag_.reset();
+  if (bag_) {
+    bool ready = true;
+    for (RawInput* in : topics_) ready = ready && in->readyFor(t_end.toNSec());
+    if (!aborted && (!wrote_any_ || last_written_ < t_end) && ready) writeAt(t_end);
+    bag_->close();
+    bag_.reset();
+  }
+  if (diag_bag_) {
+    if (!aborted && !diag_waiting_.empty()) {
+      std::string missing;
+      for (const auto& n : diag_waiting_) missing += " " + n;
+      ROS_WARN_STREAM(name() << ": no final diagnostics from" << missing << " within "
+                             << diag_wait_s_ << " s; diagnostics.bag has their last periodic status");
+    }
+    writeDiagnostics(finalDiagnostics());
+    diag_bag_->close();
+    diag_bag_.reset();
+    diag_timer_.stop();
+  }
 }
 
 }  // namespace hbt::cosim

@@ -14,12 +14,22 @@
 // is recorded without touching the launch file], record_period_s [s]
 // (0 = every macro step; otherwise the states stamped at multiples of the period are written,
 // always including t = 0 and the final state).
+//
+// Diagnostics (optional, private diagnostics_bag_file [path]): every DiagnosticArray on
+// /diagnostics (cosim/participant.hpp) is written as it arrives to that second bag (bag time =
+// header.stamp), never to bag_file: compute times differ from run to run, run.bag must not. At
+// FINISH the recorder closes only once it holds the final status (key final = true) of every
+// participant named in diagnostics_from [list] -- each carries the warnings of the whole run --
+// or after diagnostics_wait_s [s wall, default 2] (a warning names the missing ones); its own
+// final status it writes itself. At ABORT it closes at once with what it has.
 #pragma once
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <rosbag/bag.h>
 #include <topic_tools/shape_shifter.h>
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -43,7 +53,15 @@ class Recorder : public Participant {
   class RawInput;
   void writeAt(const ros::Time& t);
   void addTopic(const std::string& topic);
-  std::unique_ptr<rosbag::Bag> bag_;
+  void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& m);
+  void writeDiagnostics(const diagnostic_msgs::DiagnosticArray& m);
+  bool diagnosticsComplete() const;
+  std::unique_ptr<rosbag::Bag> bag_, diag_bag_;
+  ros::Subscriber diag_sub_;
+  ros::WallTimer diag_timer_;  // re-checks readyToClose while waiting for final statuses
+  std::set<std::string> diag_waiting_;  // participants whose final status has not arrived
+  double diag_wait_s_ = 2.0;
+  mutable double diag_wait_since_ = -1.0;  // wall time [s] the close started waiting (-1: not)
   std::vector<RawInput*> topics_;  // sorted by name; owned by the participant base
   ros::Time last_written_;
   uint64_t period_ns_ = 0;

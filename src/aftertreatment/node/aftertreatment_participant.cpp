@@ -24,6 +24,31 @@ void AftertreatmentParticipant::configure() {
   exhaust_ = &addInput<hybrid_bus_twin::ExhaustState>("/engine/exhaust");
   vehicle_ = &addInput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
   state_pub_ = addOutput<hybrid_bus_twin::AftertreatmentState>("/aftertreatment/state");
+  below_light_off_ = &addWarning("ats_below_light_off", diagnosticsParams().aftertreatment.light_off_grace_s);
+}
+
+void AftertreatmentParticipant::checkWarnings(cosim::core::Nanos t) {
+  const AtsOutputs& o = model_->outputs();
+  if (below_light_off_->update(t, !o.light_off))
+    below_light_off_->setMessage(cosim::core::formatText(
+        "SCR not lit off for %.0f s: SCR brick %.1f degC (dosing from %.1f degC), filtered NOx "
+        "conversion %.2f (light-off at %.2f)", diagnosticsParams().aftertreatment.light_off_grace_s,
+        units::kToCelsius(o.brick_T_K[kSCR]), units::kToCelsius(params_.dosing_release_T_K),
+        o.nox_conversion_filtered, params_.lightoff_conversion));
+}
+
+void AftertreatmentParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {
+  using cosim::core::formatNumber;
+  const AtsOutputs& o = model_->outputs();
+  const long n = model_->scr().solverSteps();
+  kv.push_back({"cvode_steps_window", std::to_string(n - cvode_steps_at_status_)});
+  kv.push_back({"cvode_steps_total", std::to_string(n)});
+  cvode_steps_at_status_ = n;
+  kv.push_back({"doc_temperature_c", formatNumber(units::kToCelsius(o.brick_T_K[kDOC]))});
+  kv.push_back({"scr_temperature_c", formatNumber(units::kToCelsius(o.brick_T_K[kSCR]))});
+  kv.push_back({"light_off", o.light_off ? "true" : "false"});
+  kv.push_back({"nox_conversion_filtered", formatNumber(o.nox_conversion_filtered)});
+  kv.push_back({"back_pressure_kpa", formatNumber(1e-3 * o.back_pressure_Pa)});
 }
 
 void AftertreatmentParticipant::clearAccumulator() {

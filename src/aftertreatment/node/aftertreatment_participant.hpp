@@ -15,6 +15,10 @@
 // Time stepping: the inputs of the macro steps are accumulated (time averages of the flows,
 // mass-flow-weighted exhaust temperature and composition) and the model is advanced once every
 // numerics/model_step_s; the state published between two model steps is the last one.
+// Diagnostics (README "Diagnostics"): warning ats_below_light_off (the SCR not lit off --
+// AftertreatmentState.light_off false -- for aftertreatment/light_off_grace_s without a break,
+// config/diagnostics.yaml); key/values the CVODE steps of the SCR storage (in the window and in
+// all), brick temperatures, conversion.
 #pragma once
 #include <hybrid_bus_twin/ExhaustState.h>
 #include <hybrid_bus_twin/VehicleToCooling.h>
@@ -34,6 +38,8 @@ class AftertreatmentParticipant : public cosim::Participant {
   void configure() override;
   void publishOutputs(const ros::Time& t) override;
   void step(const ros::Time& t, double dt_s) override;
+  void checkWarnings(cosim::core::Nanos t) override;
+  void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
   void clearAccumulator();
@@ -43,6 +49,8 @@ class AftertreatmentParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
   ros::Publisher state_pub_;
   double ambient_T_K_ = 298.15;
+  long cvode_steps_at_status_ = 0;  // SCR solver steps counted at the last status
+  cosim::core::Warning* below_light_off_ = nullptr;
   // input accumulator over the macro steps of one model step
   double acc_t_ = 0.0, acc_m_ = 0.0, acc_mT_ = 0.0, acc_nox_ = 0.0, acc_hc_ = 0.0, acc_co_ = 0.0;
   double acc_yO2_ = 0.0, acc_yCO2_ = 0.0, acc_yH2O_ = 0.0, acc_T_ = 0.0, acc_v_ = 0.0, acc_Tamb_ = 0.0;

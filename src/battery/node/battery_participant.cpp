@@ -21,6 +21,26 @@ void BatteryParticipant::configure() {
   emachine_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
   vehicle_ = &addInput<hybrid_bus_twin::VehicleState>("/vehicle/state");
   state_pub_ = addOutput<hybrid_bus_twin::BatteryState>("/battery/state");
+  limited_ = &addWarning("battery_limited", diagnosticsParams().battery.duration_s);
+}
+
+void BatteryParticipant::checkWarnings(cosim::core::Nanos t) {
+  const BatteryOutputs& o = model_->outputs();
+  if (limited_->update(t, o.request_limited))
+    limited_->setMessage(cosim::core::formatText(
+        "power request %.2f kW outside the limits (discharge %.2f kW, charge %.2f kW): %.2f kW "
+        "unmet at SOC %.3f, cells %.1f degC", 1e-3 * o.request_W, 1e-3 * o.discharge_power_limit_W,
+        1e-3 * o.charge_power_limit_W, 1e-3 * o.unmet_power_W, o.soc, units::kToCelsius(o.cell_T_K)));
+}
+
+void BatteryParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {
+  using cosim::core::formatNumber;
+  const BatteryOutputs& o = model_->outputs();
+  kv.push_back({"soc", formatNumber(o.soc)});
+  kv.push_back({"cell_temperature_c", formatNumber(units::kToCelsius(o.cell_T_K))});
+  kv.push_back({"discharge_power_limit_kw", formatNumber(1e-3 * o.discharge_power_limit_W)});
+  kv.push_back({"charge_power_limit_kw", formatNumber(1e-3 * o.charge_power_limit_W)});
+  kv.push_back({"limited_time_s", formatNumber(o.limited_time_s)});
 }
 
 void BatteryParticipant::step(const ros::Time& t, double dt_s) {

@@ -16,6 +16,9 @@
 // Parameters: private namespace = config/battery.yaml (cell/table_file resolved against the
 // package root, cosim::resolvePackagePath); /scenario/ambient_temperature_c = the air around the
 // pack, constant (initial state: cells at ambient, cold start; SOC = pack/initial_soc).
+// Diagnostics (README "Diagnostics"): warning battery_limited (request_limited for
+// battery/duration_s, config/diagnostics.yaml); key/values SOC, cell temperature, power limits,
+// time limited.
 #pragma once
 #include <hybrid_bus_twin/EMachineState.h>
 #include <hybrid_bus_twin/VehicleState.h>
@@ -35,6 +38,8 @@ class BatteryParticipant : public cosim::Participant {
   void configure() override;
   void publishOutputs(const ros::Time& t) override;
   void step(const ros::Time& t, double dt_s) override;
+  void checkWarnings(cosim::core::Nanos t) override;
+  void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
   std::unique_ptr<BatteryModel> model_;
@@ -42,6 +47,7 @@ class BatteryParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::VehicleState>* vehicle_ = nullptr;  // DC/DC load of the 24 V consumers
   ros::Publisher state_pub_;
   double ambient_T_K_ = 298.15, dcdc_power_W_ = 0.0;  // last step's DC/DC load [W]
+  cosim::core::Warning* limited_ = nullptr;
 };
 
 }  // namespace hbt::battery

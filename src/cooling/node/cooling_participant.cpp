@@ -32,6 +32,29 @@ void CoolingParticipant::configure() {
   pnh_.param("loops/ems", hybrid, false);
   if (hybrid) emachine_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
   state_pub_ = addOutput<hybrid_bus_twin::CoolingState>("/cooling/state");
+  const auto& d = diagnosticsParams().cooling;
+  overheat_ = &addWarning("coolant_overheat", d.duration_s);
+  overheat_level_ = std::make_unique<cosim::core::Hysteresis>(d.overheat_c, d.overheat_release_c);
+}
+
+void CoolingParticipant::checkWarnings(cosim::core::Nanos t) {
+  const CoolingOutputs& o = model_->outputs();
+  const double T_c = units::kToCelsius(o.coolant_ht_T_K);
+  const auto& d = diagnosticsParams().cooling;
+  if (overheat_->update(t, overheat_level_->update(T_c)))
+    overheat_->setMessage(cosim::core::formatText(
+        "HT coolant %.1f degC above %.1f degC for %.1f s (thermostat %.2f open, fan engaged %.2f)",
+        T_c, d.overheat_c, d.duration_s, o.thermostat_opening, o.fan_engagement));
+}
+
+void CoolingParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {
+  using cosim::core::formatNumber;
+  const CoolingOutputs& o = model_->outputs();
+  kv.push_back({"coolant_ht_temperature_c", formatNumber(units::kToCelsius(o.coolant_ht_T_K))});
+  kv.push_back({"coolant_lt_temperature_c", formatNumber(units::kToCelsius(o.coolant_lt_T_K))});
+  kv.push_back({"thermostat_opening", formatNumber(o.thermostat_opening)});
+  kv.push_back({"fan_engagement", formatNumber(o.fan_engagement)});
+  kv.push_back({"fan_drive_power_w", formatNumber(o.fan_drive_power_W)});
 }
 
 void CoolingParticipant::step(const ros::Time& t, double dt_s) {

@@ -11,6 +11,9 @@
 // state: everything at ambient, cold start); /scenario/ambient_pressure_pa (default 101325 Pa).
 // Hybrid (private parameter loops/ems): /emachine/state lt_heat_w (e-machine housing +
 // inverter heat into the LT coolant) feeds the LT circuit; baseline: 0 W (the circuit idles).
+// Diagnostics (README "Diagnostics"): warning coolant_overheat (HT coolant above cooling/overheat_c
+// until below cooling/overheat_release_c, for cooling/duration_s, config/diagnostics.yaml);
+// key/values coolant temperatures, thermostat opening, fan engagement and power.
 #pragma once
 #include <hybrid_bus_twin/EMachineState.h>
 #include <hybrid_bus_twin/EngineHeat.h>
@@ -31,6 +34,8 @@ class CoolingParticipant : public cosim::Participant {
   void configure() override;
   void publishOutputs(const ros::Time& t) override;
   void step(const ros::Time& t, double dt_s) override;
+  void checkWarnings(cosim::core::Nanos t) override;
+  void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
   std::unique_ptr<CoolingModel> model_;
@@ -41,6 +46,8 @@ class CoolingParticipant : public cosim::Participant {
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = 101325.0;
   CoolingInputs last_in_;
   bool started_ = false;                                       // a step was taken
+  cosim::core::Warning* overheat_ = nullptr;
+  std::unique_ptr<cosim::core::Hysteresis> overheat_level_;    // HT coolant [degC]
   double prev_engine_heat_J_ = 0.0, prev_lt_heat_J_ = 0.0;     // producers' cumulative heat at the last step [J]
 };
 

@@ -93,6 +93,7 @@ class ParticipantCore {
 
   const std::string& name() const { return name_; }
   bool failed() const { return failed_; }
+  bool configured() const { return configured_; }  ///< configure() succeeded
   bool closed() const { return closed_; }
   bool started() const { return started_; }
   uint32_t multiple() const { return multiple_; }

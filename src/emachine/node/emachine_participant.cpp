@@ -24,6 +24,25 @@ void EMachineParticipant::configure() {
   battery_ = &addInput<hybrid_bus_twin::BatteryState>("/battery/state");
   if (cooling) cooling_ = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
   state_pub_ = addOutput<hybrid_bus_twin::EMachineState>("/emachine/state");
+  derating_ = &addWarning("emachine_derating", diagnosticsParams().emachine.duration_s);
+}
+
+void EMachineParticipant::checkWarnings(cosim::core::Nanos t) {
+  const EMachineOutputs& o = model_->outputs();
+  if (derating_->update(t, o.limits.derating_factor < diagnosticsParams().emachine.derating_factor_below))
+    derating_->setMessage(cosim::core::formatText(
+        "thermal derating: live torque limit %.3f of the peak (winding %.1f degC, magnet %.1f degC)",
+        o.limits.derating_factor, units::kToCelsius(o.winding_T_K), units::kToCelsius(o.magnet_T_K)));
+}
+
+void EMachineParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {
+  using cosim::core::formatNumber;
+  const EMachineOutputs& o = model_->outputs();
+  kv.push_back({"derating_factor", formatNumber(o.limits.derating_factor)});
+  kv.push_back({"torque_max_live_nm", formatNumber(o.limits.max_live)});
+  kv.push_back({"torque_min_live_nm", formatNumber(o.limits.min_live)});
+  kv.push_back({"winding_temperature_c", formatNumber(units::kToCelsius(o.winding_T_K))});
+  kv.push_back({"magnet_temperature_c", formatNumber(units::kToCelsius(o.magnet_T_K))});
 }
 
 void EMachineParticipant::step(const ros::Time& t, double dt_s) {

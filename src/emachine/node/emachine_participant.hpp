@@ -12,6 +12,9 @@
 // Parameters: private namespace = config/emachine.yaml (data/vemp_file relative to the package,
 // /scenario/package_dir); /scenario/ambient_temperature_c (initial state: every node at ambient,
 // cold start; coolant when loops/cooling is false).
+// Diagnostics (README "Diagnostics"): warning emachine_derating (derating_factor below
+// emachine/derating_factor_below for emachine/duration_s, config/diagnostics.yaml); key/values
+// derating factor, live limits, winding/magnet temperatures.
 #pragma once
 #include <hybrid_bus_twin/BatteryState.h>
 #include <hybrid_bus_twin/CoolingState.h>
@@ -32,6 +35,8 @@ class EMachineParticipant : public cosim::Participant {
   void configure() override;
   void publishOutputs(const ros::Time& t) override;
   void step(const ros::Time& t, double dt_s) override;
+  void checkWarnings(cosim::core::Nanos t) override;
+  void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
   std::unique_ptr<EMachineModel> model_;
@@ -40,6 +45,7 @@ class EMachineParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // loops/cooling only
   ros::Publisher state_pub_;
   double ambient_T_K_ = 298.15;
+  cosim::core::Warning* derating_ = nullptr;
 };
 
 }  // namespace hbt::emachine

@@ -72,6 +72,18 @@ void EmsParticipant::step(const ros::Time& t, double dt_s) {
   last_demand_ = d;
 }
 
+void EmsParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {
+  using cosim::core::formatNumber;
+  const EmsDecision& e = model_->decision();
+  kv.push_back({"mode", std::to_string(static_cast<int>(e.mode))});
+  kv.push_back({"reason", std::to_string(static_cast<int>(e.reason))});
+  kv.push_back({"equivalence_factor", formatNumber(e.equivalence_factor)});
+  kv.push_back({"engine_on", e.engine_on ? "true" : "false"});
+  kv.push_back({"engine_stops", std::to_string(e.engine_stops)});
+  kv.push_back({"engine_starts", std::to_string(e.engine_starts)});
+  kv.push_back({"warmup_inhibit_time_s", formatNumber(e.warmup_inhibit_time_s)});
+}
+
 void EmsParticipant::publishOutputs(const ros::Time& t) {
   const EmsDecision& e = model_->decision();
   hybrid_bus_twin::EmsCommand c;

@@ -11,6 +11,8 @@
 //         the vehicle and the bag), /ems/engine_command (EngineCommand for the engine node).
 // Parameters: private namespace = config/ems.yaml; engine_model_config (the map engine YAML);
 //         stop_start_supported (false with the 1D engine: it cannot be stopped and cranked).
+// Diagnostics (README "Diagnostics"): no warnings of its own (the limits it meets are the
+// e-machine's and the battery's); key/values mode, reason, equivalence factor, stops/starts.
 #pragma once
 #include <hybrid_bus_twin/AftertreatmentState.h>
 #include <hybrid_bus_twin/BatteryState.h>
@@ -44,6 +46,7 @@ class EmsParticipant : public cosim::Participant {
   void configure() override;
   void publishOutputs(const ros::Time& t) override;
   void step(const ros::Time& t, double dt_s) override;
+  void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
   std::unique_ptr<MapFuelModel> fuel_;

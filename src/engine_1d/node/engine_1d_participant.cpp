@@ -41,6 +41,31 @@ void Engine1DParticipant::configure() {
   ports_ = cosim::EnginePorts(addOutput<hybrid_bus_twin::EngineState>("/engine/state"),
                               addOutput<hybrid_bus_twin::ExhaustState>("/engine/exhaust"),
                               addOutput<hybrid_bus_twin::EngineHeat>("/engine/heat"));
+  boost_limited_ = &addWarning("boost_limited", diagnosticsParams().engine.duration_s);
+}
+
+void Engine1DParticipant::checkWarnings(cosim::core::Nanos t) {
+  const Engine1DOutputs& o = engine_->outputs();
+  if (boost_limited_->update(t, o.smoke_limited))
+    boost_limited_->setMessage(cosim::core::formatText(
+        "smoke limiter holding the fuel for %.1f s: lambda %.2f, boost %.0f kPa (target %.0f kPa), "
+        "request %.0f Nm, brake torque %.0f Nm at %.0f rpm", diagnosticsParams().engine.duration_s,
+        o.lambda, 1e-3 * o.boost_pressure_Pa, 1e-3 * o.boost_target_Pa, request_Nm_,
+        o.brake_torque_Nm, units::radpsToRpm(speed_rad_s_)));
+}
+
+void Engine1DParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {
+  using cosim::core::formatNumber;
+  const Engine1DOutputs& o = engine_->outputs();
+  kv.push_back({"gas_steps_window", std::to_string(o.gas_steps - gas_steps_at_status_)});
+  kv.push_back({"gas_steps_total", std::to_string(o.gas_steps)});
+  gas_steps_at_status_ = o.gas_steps;
+  kv.push_back({"speed_rpm", formatNumber(units::radpsToRpm(speed_rad_s_))});
+  kv.push_back({"torque_request_nm", formatNumber(request_Nm_)});
+  kv.push_back({"brake_torque_nm", formatNumber(o.brake_torque_Nm)});
+  kv.push_back({"lambda", formatNumber(o.lambda)});
+  kv.push_back({"boost_kpa", formatNumber(1e-3 * o.boost_pressure_Pa)});
+  kv.push_back({"smoke_limited", o.smoke_limited ? "true" : "false"});
 }
 
 void Engine1DParticipant::step(const ros::Time& t, double dt_s) {
@@ -55,6 +80,7 @@ void Engine1DParticipant::step(const ros::Time& t, double dt_s) {
   in.coolant_T_K = used_coolant_T_K_ = loops_.coolantAt(t, coolant_T_K_);
   in.fuel_enabled = cmd.engine_on;
   speed_rad_s_ = in.speed_rad_s;
+  request_Nm_ = in.torque_request_Nm;
   engine_->step(dt_s, in);
 }
 

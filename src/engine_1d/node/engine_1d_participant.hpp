@@ -14,6 +14,9 @@
 // optional) overrides engine_1d/solver. Without the aftertreatment and cooling nodes the
 // back-pressure comes from the model's documented constant-orifice default and the coolant is
 // at the model's thermostat temperature (Engine1DInputs::coolant_T_K, 363.15 K).
+// Diagnostics (README "Diagnostics"): warning boost_limited (the smoke limiter -- minimum lambda,
+// i.e. too little boost air -- holds the fuel for engine/duration_s, config/diagnostics.yaml);
+// key/values the coupled gas-dynamic/cylinder sub-steps (in the window and in all), lambda, boost.
 #pragma once
 #include <hybrid_bus_twin/EngineCommand.h>
 
@@ -33,6 +36,8 @@ class Engine1DParticipant : public cosim::Participant {
   void configure() override;
   void publishOutputs(const ros::Time& t) override;
   void step(const ros::Time& t, double dt_s) override;
+  void checkWarnings(cosim::core::Nanos t) override;
+  void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
   std::unique_ptr<Engine1D> engine_;
@@ -42,6 +47,9 @@ class Engine1DParticipant : public cosim::Participant {
   const double coolant_T_K_ = Engine1DInputs{}.coolant_T_K;  // warm default without a cooling node
   cosim::EngineLoopInputs loops_;
   double used_coolant_T_K_ = 0.0, back_pressure_Pa_ = 0.0;  // loop inputs of the last step
+  double request_Nm_ = 0.0;       // torque request of the last step [Nm]
+  long gas_steps_at_status_ = 0;  // sub-steps counted at the last status
+  cosim::core::Warning* boost_limited_ = nullptr;
 };
 
 }  // namespace hbt::engine1d

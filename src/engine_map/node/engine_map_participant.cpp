@@ -29,6 +29,29 @@ void EngineMapParticipant::configure() {
   ports_ = cosim::EnginePorts(addOutput<hybrid_bus_twin::EngineState>("/engine/state"),
                               addOutput<hybrid_bus_twin::ExhaustState>("/engine/exhaust"),
                               addOutput<hybrid_bus_twin::EngineHeat>("/engine/heat"));
+  boost_limited_ = &addWarning("boost_limited", diagnosticsParams().engine.duration_s);
+}
+
+void EngineMapParticipant::checkWarnings(cosim::core::Nanos t) {
+  const MapEngineOutputs& o = engine_->outputs();
+  const double m = diagnosticsParams().engine.margin_nm;
+  const bool limited = request_Nm_ > o.dynamic_max_torque_Nm + m && o.dynamic_max_torque_Nm < o.max_torque_Nm - m;
+  if (boost_limited_->update(t, limited))
+    boost_limited_->setMessage(cosim::core::formatText(
+        "torque request %.0f Nm above the PT1 (turbo build-up) limit %.0f Nm, full load %.0f Nm, "
+        "at %.0f rpm for %.1f s", request_Nm_, o.dynamic_max_torque_Nm, o.max_torque_Nm,
+        units::radpsToRpm(speed_rad_s_), diagnosticsParams().engine.duration_s));
+}
+
+void EngineMapParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {
+  using cosim::core::formatNumber;
+  const MapEngineOutputs& o = engine_->outputs();
+  kv.push_back({"speed_rpm", formatNumber(units::radpsToRpm(speed_rad_s_))});
+  kv.push_back({"torque_request_nm", formatNumber(request_Nm_)});
+  kv.push_back({"brake_torque_nm", formatNumber(o.brake_torque_Nm)});
+  kv.push_back({"dynamic_full_load_nm", formatNumber(o.dynamic_max_torque_Nm)});
+  kv.push_back({"full_load_nm", formatNumber(o.max_torque_Nm)});
+  kv.push_back({"fuel_cut", o.fuel_cut ? "true" : "false"});
 }
 
 void EngineMapParticipant::step(const ros::Time& t, double dt_s) {
@@ -42,6 +65,7 @@ void EngineMapParticipant::step(const ros::Time& t, double dt_s) {
   in.coolant_T_K = coolant_T_K_ = loops_.coolantAt(t, 0.0);
   in.back_pressure_Pa = back_pressure_Pa_ = loops_.backPressureAt(t);
   speed_rad_s_ = in.speed_rad_s;
+  request_Nm_ = in.torque_request_Nm;
   engine_->step(dt_s, in);
 }
 

@@ -90,6 +90,40 @@ void VehicleParticipant::configure() {
   if (hybrid) demand_pub_ = addOutput<hybrid_bus_twin::DriverDemand>("/vehicle/driver_demand");
   else command_pub_ = addOutput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
   cooling_pub_ = addOutput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
+  const auto& d = diagnosticsParams().vehicle;
+  not_tracking_ = &addWarning("driver_not_tracking", d.duration_s);
+  speed_error_ = std::make_unique<cosim::core::Hysteresis>(d.speed_error_kmh, d.speed_error_release_kmh);
+}
+
+/// Pedal position taken as saturated: the driver has no authority left [-].
+constexpr double kPedalSaturated = 0.99;
+
+void VehicleParticipant::checkWarnings(cosim::core::Nanos t) {
+  const VehicleOutputs& o = model_->outputs();
+  const double target_kmh = 3.6 * profile_.speedAt(cosim::core::toSec(t));  // as in /vehicle/state
+  const double err_kmh = target_kmh - 3.6 * o.speed_m_s;
+  const bool large = speed_error_->update(std::abs(err_kmh));
+  // the target is reachable while the pedal that would close the gap is not saturated
+  const bool authority = err_kmh > 0.0 ? o.accel_pedal < kPedalSaturated : o.brake_pedal < kPedalSaturated;
+  const auto& d = diagnosticsParams().vehicle;
+  if (not_tracking_->update(t, large && authority))
+    not_tracking_->setMessage(cosim::core::formatText(
+        "speed %.1f km/h vs target %.1f km/h: |error| above %.1f km/h for %.1f s with the %s pedal at %.2f",
+        3.6 * o.speed_m_s, target_kmh, d.speed_error_kmh, d.duration_s,
+        err_kmh > 0.0 ? "accelerator" : "brake", err_kmh > 0.0 ? o.accel_pedal : o.brake_pedal));
+}
+
+void VehicleParticipant::diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) {
+  using cosim::core::formatNumber;
+  const VehicleOutputs& o = model_->outputs();
+  const double target_kmh = 3.6 * profile_.speedAt(cosim::core::toSec(t));
+  kv.push_back({"speed_kmh", formatNumber(3.6 * o.speed_m_s)});
+  kv.push_back({"target_speed_kmh", formatNumber(target_kmh)});
+  kv.push_back({"speed_error_kmh", formatNumber(target_kmh - 3.6 * o.speed_m_s)});
+  kv.push_back({"gear", std::to_string(o.gear)});
+  kv.push_back({"accelerator_pedal", formatNumber(o.accel_pedal)});
+  kv.push_back({"brake_pedal", formatNumber(o.brake_pedal)});
+  kv.push_back({"distance_m", formatNumber(o.distance_m)});
 }
 
 void VehicleParticipant::writeStops(const std::string& path) const {

@@ -18,6 +18,9 @@
 // em_config_file (config/emachine.yaml) -> the P1 rotor's inertia x ratio² joins the crank's.
 // Side outputs at start-up: <out_dir>/profile.csv (time-based target profile) and
 // <out_dir>/stops.csv (stop positions and times); the mission duration in its ANNOUNCE.
+// Diagnostics (README "Diagnostics"): warning driver_not_tracking (|target - actual speed| beyond
+// config/diagnostics.yaml vehicle/* while the pedal that would close the gap is not saturated);
+// key/values speed, target, error, gear, pedals, distance.
 #pragma once
 #include <hybrid_bus_twin/CoolingState.h>
 #include <hybrid_bus_twin/EMachineState.h>
@@ -41,6 +44,8 @@ class VehicleParticipant : public cosim::Participant {
   void publishOutputs(const ros::Time& t) override;
   void step(const ros::Time& t, double dt_s) override;
   bool finished() const override { return t_s_ >= profile_.duration_s() - 1e-9; }
+  void checkWarnings(cosim::core::Nanos t) override;
+  void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
   void writeStops(const std::string& path) const;
@@ -53,6 +58,8 @@ class VehicleParticipant : public cosim::Participant {
   ros::Publisher state_pub_, command_pub_, cooling_pub_, demand_pub_;
   double last_engine_max_Nm_ = 0.0, last_engine_min_Nm_ = 0.0;
   bool engine_on_ = true;
+  cosim::core::Warning* not_tracking_ = nullptr;
+  std::unique_ptr<cosim::core::Hysteresis> speed_error_;  // |target - actual| [km/h]
   double t_s_ = 0.0, ambient_T_K_ = 298.15;
 };
 
