@@ -2,10 +2,10 @@
 """Benchmarks of the twin (full missions: minutes to hours; never part of the test suite).
 
   scripts/twin bench [map]          baseline_urban, map engine, full mission, mode nodes and
-                                    nodelets: wall/simulated ratio, distance, fuel, per-node CPU
+                                    nodelets: wall/simulated ratio, distance, fuel, per-node compute time
   scripts/twin bench map --until S  the same on the first S seconds only
   scripts/twin bench 1d [--until S]  map engine vs 1D engine (FSM), nodelets: wall/simulated,
-                                    engine CPU/simulated, fuel, NOx, torque traces compared
+                                    engine compute time/simulated, fuel, NOx, torque traces compared
   scripts/twin bench engine [--duration S]  the 1D engine alone on the WHTC (GTR No. 4, speed
                                     imposed, torque requested), FSM then TVD on the same trace:
                                     CPU/simulated of each, FSM/TVD cost, cumulative fuel difference
@@ -57,7 +57,7 @@ def run_scenario(scenario, out, args):
         s = json.load(f)
     with open(os.path.join(out, "status.json")) as f:
         st = json.load(f)
-    s["cpu_time_s"] = st.get("cpu_time_s", {})
+    s["compute_time_s"] = st.get("compute_time_s", {})
     s["process_wall_s"] = wall
     return s
 
@@ -75,7 +75,7 @@ def bench_map(a):
             rows.append((mode, s))
     print("\nbaseline_urban, map engine, ambient 25 C, macro step %s s" %
           (rows[0][1]["macro_step_s"] if rows else "?"))
-    print("| mode | sim time [s] | wall time [s] | wall/sim | steps/s | distance [km] | fuel [L/100km] | CPU per node [s] |")
+    print("| mode | sim time [s] | wall time [s] | wall/sim | steps/s | distance [km] | fuel [L/100km] | compute time per node [s] |")
     print("|---|---|---|---|---|---|---|---|")
     for mode, s in rows:
         steps = s["sim_time_s"] / s["macro_step_s"]
@@ -83,7 +83,7 @@ def bench_map(a):
             mode, s["sim_time_s"], s["wall_time_s"], s["wall_time_s"] / s["sim_time_s"],
             steps / s["wall_time_s"], s.get("distance_km", float("nan")),
             s.get("fuel_l_per_100km", float("nan")),
-            ", ".join("%s %.1f" % kv for kv in sorted(s["cpu_time_s"].items()))))
+            ", ".join("%s %.1f" % kv for kv in sorted(s["compute_time_s"].items()))))
     with open(os.path.join(REPO, "results", "bench", "map.json"), "w") as f:
         json.dump(dict(rows), f, indent=2)
     return 0 if len(rows) == 2 else 1
@@ -142,12 +142,12 @@ def bench_1d(a):
             rows.append((engine, s))
             outs[engine] = out
     print("\nbaseline_urban, ambient 25 C, mode nodelets: map engine vs 1D engine (FSM)")
-    print("| engine | sim time [s] | wall/sim | engine CPU/sim | distance [km] | fuel [kg] | fuel [L/100km] | NOx engine-out [g] |")
+    print("| engine | sim time [s] | wall/sim | engine compute/sim | distance [km] | fuel [kg] | fuel [L/100km] | NOx engine-out [g] |")
     print("|---|---|---|---|---|---|---|---|")
     for engine, s in rows:
         print("| %s | %.1f | %.4f | %.4f | %.3f | %.3f | %.2f | %s |" % (
             engine, s["sim_time_s"], s["wall_time_s"] / s["sim_time_s"],
-            s["cpu_time_s"].get("engine", float("nan")) / s["sim_time_s"], s.get("distance_km", float("nan")),
+            s["compute_time_s"].get("engine", float("nan")) / s["sim_time_s"], s.get("distance_km", float("nan")),
             s.get("fuel_kg", float("nan")), s.get("fuel_l_per_100km", float("nan")),
             "%.1f" % s["nox_engine_out_g"] if "nox_engine_out_g" in s else "-"))
     if len(outs) == 2:
@@ -242,10 +242,10 @@ def bench_hybrid(a):
                                  "--bag", os.path.join(ho, "run.bag"), "--baseline", os.path.join(bo, "summary.json")],
                                 stdout=subprocess.DEVNULL)
                 with open(os.path.join(ho, "summary.json")) as f:
-                    cpu = hs.get("cpu_time_s", {})
+                    cpu = hs.get("compute_time_s", {})
                     hs.clear()
                     hs.update(json.load(f))
-                    hs["cpu_time_s"] = cpu
+                    hs["compute_time_s"] = cpu
     lines = ["# Baseline vs 48 V P1 hybrid, VECTO Urban, full mission%s" % (" (first %g s)" % a.until if a.until else ""), "",
              "Produced by `scripts/twin bench hybrid --engines %s --jobs %d`; nodelets; both runs of a pair with the"
              " torque chain stepped without delay (Gauss-Seidel groups). Saving = (baseline fuel - hybrid fuel"

@@ -10,7 +10,7 @@ manager, one lock-step thread), in three variants:
   ordered     N groups [[p0], [p1], ...]: each probe reads its predecessor's fresh output, so
               each base step is N commands and N statuses in sequence (the longest chain)
 Measured: base steps per second of simulated stepping (the stepper's status.json: steps /
-wall_time_s, START to the end) and the participants' CPU. The full missions are `twin bench map`
+wall_time_s, START to the end) and the participants' compute time (steady clock inside their steps). The full missions are `twin bench map`
 (baseline, nodes and nodelets) and `twin bench hybrid`.
 """
 import json
@@ -84,7 +84,7 @@ def run_one(root, n, mode, variant, steps):
         return None
     return {"steps": st["steps"], "wall_s": st["wall_time_s"],
             "steps_per_s": st["steps"] / st["wall_time_s"],
-            "cpu_s": sum(st.get("cpu_time_s", {}).values())}
+            "compute_s": sum(st.get("compute_time_s", {}).values())}
 
 
 def bench_cosim(a, repo):
@@ -98,7 +98,7 @@ def bench_cosim(a, repo):
                 rows.append((mode, variant, n, r))
                 print("bench cosim: %-8s %-9s N=%d  %s" % (mode, variant, n, "failed" if r is None else
                       "%8.0f base steps/s" % r["steps_per_s"]), file=sys.stderr, flush=True)
-    print("\n| mode | variant | participants | base steps | wall [s] | base steps/s | participants' CPU / wall |")
+    print("\n| mode | variant | participants | base steps | wall [s] | base steps/s | participants' compute time / wall |")
     print("|---|---|---|---|---|---|---|")
     for mode, variant, n, r in rows:
         if r is None:
@@ -106,7 +106,7 @@ def bench_cosim(a, repo):
                   % (mode, variant, n, mode, variant, n))
         else:
             print("| %s | %s | %d | %d | %.2f | %.0f | %.2f |" % (mode, variant, n, r["steps"], r["wall_s"],
-                                                               r["steps_per_s"], r["cpu_s"] / r["wall_s"]))
+                                                               r["steps_per_s"], r["compute_s"] / r["wall_s"]))
     with open(os.path.join(repo, "results", "bench", "cosim.json"), "w") as fh:
         json.dump([{"mode": m, "variant": v, "participants": n, "result": r} for m, v, n, r in rows], fh, indent=2)
     return 0 if all(r is not None for *_, r in rows) else 1

@@ -73,6 +73,6 @@ def report_lines(nodes, warnings):
         v = nodes[n]["values"]
         lines.append("| %s | %s | %s | %s | %s | %s |" % (
             n, v.get("steps_total", "?"), v.get("step_compute_ms_mean_run", "?"),
-            v.get("step_compute_ms_max_run", "?"), v.get("cpu_time_s", "?"),
+            v.get("step_compute_ms_max_run", "?"), v.get("compute_time_s", "?"),
             "final" if nodes[n]["final"] else "no final status (last at t = %.1f s)" % nodes[n]["t"]))
     return lines + [""]

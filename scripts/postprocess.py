@@ -240,8 +240,8 @@ def report(out, s, status, files, diag_lines=()):
     if s.get("sim_time_s"):
         lines.append("Wall/simulated time ratio: %.4f" % (s["wall_time_s"] / s["sim_time_s"]))
     lines.append("")
-    lines.append("CPU time per participant [s]: " + ", ".join(
-        "%s %.2f" % kv for kv in sorted(status.get("cpu_time_s", {}).items())))
+    lines.append("Compute time per participant (steady clock inside its steps) [s]: " + ", ".join(
+        "%s %.2f" % kv for kv in sorted(status.get("compute_time_s", {}).items())))
     lines.append("")
     lines.append("Fuel density %.3f kg/L (diesel). Data: bag `run.bag` (analyse by header.stamp)." % DIESEL_DENSITY_KG_L)
     lines.append("")

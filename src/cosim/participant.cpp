@@ -118,7 +118,7 @@ class Participant::Hooks : public core::ParticipantHooks {
     s.node = c.node;
     s.status = static_cast<uint8_t>(c.status);
     s.step = c.step;
-    s.cpu_time_s = c.cpu_time_s;
+    s.compute_time_s = c.compute_time_s;
     s.message = c.message;
     s.outputs = c.outputs;
     s.observer = c.observer;
@@ -155,7 +155,7 @@ void Participant::diagnose(core::Nanos t, bool final) {
     checkWarnings(t);
     if (!diag_.due(t)) return;
   }
-  core::DiagStatus st = diag_.status(t, final, core_.cpuSeconds());
+  core::DiagStatus st = diag_.status(t, final, core_.computeSeconds());
   if (core_.configured()) diagnosticValues(t, st.values);  // not on a half-built model
   auto arr = boost::make_shared<diagnostic_msgs::DiagnosticArray>();
   arr->header.stamp = fromNanos(t);

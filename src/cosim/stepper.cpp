@@ -93,7 +93,7 @@ void Stepper::onStatus(const StepStatus::ConstPtr& m) {
   s.status = static_cast<core::St>(m->status);
   s.step = m->step;
   s.t = static_cast<core::Nanos>(m->header.stamp.toNSec());
-  s.cpu_time_s = m->cpu_time_s;
+  s.compute_time_s = m->compute_time_s;
   s.message = m->message;
   s.outputs = m->outputs;
   s.observer = m->observer;
@@ -172,11 +172,11 @@ void Stepper::writeStatus(const std::string& status, const std::string& message,
   pnh_.param("dt_s", dt, 0.01);
   f << "{\n  \"status\": \"" << status << "\",\n  \"message\": \"" << jsonEscape(message)
     << "\",\n  \"sim_time_s\": " << sim_s << ",\n  \"wall_time_s\": " << wall_s
-    << ",\n  \"steps\": " << steps << ",\n  \"macro_step_s\": " << dt << ",\n  \"cpu_time_s\": {";
+    << ",\n  \"steps\": " << steps << ",\n  \"macro_step_s\": " << dt << ",\n  \"compute_time_s\": {";
   bool first = true;
   if (core_)
     for (const auto& kv : core_->peers()) {
-      f << (first ? "" : ",") << "\n    \"" << kv.first << "\": " << kv.second.cpu_s;
+      f << (first ? "" : ",") << "\n    \"" << kv.first << "\": " << kv.second.compute_s;
       first = false;
     }
   f << "\n  }\n}\n";

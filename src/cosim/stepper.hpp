@@ -2,7 +2,7 @@
 // machine core::StepperCore (core/stepper_core.hpp, tested in-process); this class reads the
 // parameters, translates StepStatus -> core events and core commands -> StepCommand and /clock,
 // drives the core's wall-clock timeouts with a 50 ms wall timer, prints the progress line, writes
-// `status_file` (JSON: status, message, sim_time_s, wall_time_s, steps, macro_step_s, cpu_time_s
+// `status_file` (JSON: status, message, sim_time_s, wall_time_s, steps, macro_step_s, compute_time_s
 // per node) and shuts ROS down. The run ends at the end of the mission (a participant reports
 // FINISHED), at `until_s`, on an ERROR status, or when a participant does not answer within
 // `timeout_s` (wall clock). The exit status of a run is read from the status file by scripts/twin.

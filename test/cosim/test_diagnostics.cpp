@@ -132,7 +132,7 @@ TEST(Diagnostics, StatusKeysWindowAndWarnings) {
   EXPECT_EQ(v["steps_window"], "2");
   EXPECT_EQ(v["step_compute_ms_mean"], "3");
   EXPECT_EQ(v["step_compute_ms_max"], "4");
-  EXPECT_EQ(v["cpu_time_s"], "0.25");
+  EXPECT_EQ(v["compute_time_s"], "0.25");
   EXPECT_EQ(v["warnings_checked"], "ats_below_light_off, coolant_overheat");
   EXPECT_EQ(v.count("warning/ats_below_light_off/first_time_s"), 0u);  // only raised ones
 

@@ -78,7 +78,7 @@ bool Diagnostics::due(Nanos t) {
   return true;
 }
 
-DiagStatus Diagnostics::status(Nanos t, bool final, double cpu_time_s) {
+DiagStatus Diagnostics::status(Nanos t, bool final, double compute_time_s) {
   DiagStatus s;
   auto kv = [&s](const std::string& k, const std::string& v) { s.values.push_back({k, v}); };
   kv("sim_time_s", formatSeconds(t));
@@ -89,7 +89,7 @@ DiagStatus Diagnostics::status(Nanos t, bool final, double cpu_time_s) {
   kv("steps_total", std::to_string(step_ms_.totalCount()));
   kv("step_compute_ms_mean_run", formatNumber(step_ms_.totalMean()));
   kv("step_compute_ms_max_run", formatNumber(step_ms_.totalMax()));
-  kv("cpu_time_s", formatNumber(cpu_time_s));
+  kv("compute_time_s", formatNumber(compute_time_s));
   std::string checked, active, earlier;
   for (const auto& w : warnings_) {
     checked += (checked.empty() ? "" : ", ") + w->name();

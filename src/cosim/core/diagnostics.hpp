@@ -110,10 +110,10 @@ class Diagnostics {
   bool due(Nanos t);
   /// The status of the state at t and closes the compute-time window. Keys (README
   /// "Diagnostics"): sim_time_s, final, steps_window, step_compute_ms_mean, step_compute_ms_max,
-  /// steps_total, step_compute_ms_mean_run, step_compute_ms_max_run, cpu_time_s, warnings_checked,
+  /// steps_total, step_compute_ms_mean_run, step_compute_ms_max_run, compute_time_s, warnings_checked,
   /// and for every warning raised so far warning/<name>/{first_time_s, raised, active, active_s,
   /// message}. Level Warn while a warning is active.
-  DiagStatus status(Nanos t, bool final, double cpu_time_s);
+  DiagStatus status(Nanos t, bool final, double compute_time_s);
 
  private:
   Nanos period_ = 1000000000, next_due_ = 0;

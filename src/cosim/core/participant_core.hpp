@@ -98,7 +98,7 @@ class ParticipantCore {
   bool started() const { return started_; }
   uint32_t multiple() const { return multiple_; }
   uint32_t group() const { return group_; }
-  double cpuSeconds() const { return cpu_s_; }
+  double computeSeconds() const { return compute_s_; }  // in configure() and step() [s, steady clock]
   const std::vector<InputPort*>& inputs() const { return inputs_; }
 
  private:
@@ -124,7 +124,7 @@ class ParticipantCore {
   Nanos base_ns_ = 0, period_ns_ = 0;
   Nanos t_pending_ = 0, t_close_ = 0;
   uint64_t k_pending_ = 0, k_close_ = 0;
-  double cpu_s_ = 0.0;
+  double compute_s_ = 0.0;
   std::string error_;
 };
 

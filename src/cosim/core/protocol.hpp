@@ -50,7 +50,7 @@ struct Status {
   St status = St::Announce;
   uint64_t step = 0;   // k of the step done, or the SYNC round answered
   Nanos t = 0;         // DONE: t_k + period (stamp of the outputs published)
-  double cpu_time_s = 0.0;
+  double compute_time_s = 0.0;  // in the model so far [s, steady clock] (participant_core.cpp)
   std::string message;
   // ANNOUNCE
   std::vector<std::string> outputs;   // resolved output topics

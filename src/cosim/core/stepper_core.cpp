@@ -88,7 +88,7 @@ void StepperCore::onStatus(const Status& s, double wall_s) {
   auto it = peers_.find(s.node);
   if (it == peers_.end()) return;  // not a participant of this run
   Peer& p = it->second;
-  p.cpu_s = s.cpu_time_s;
+  p.compute_s = s.compute_time_s;
   if (s.status == St::Error) {
     if (phase_ != Phase::Closing && phase_ != Phase::Done) finish(true, s.message, wall_s);
     return;

@@ -66,7 +66,7 @@ class StepperCore {
     bool due = false, done = false, closed = false;
     uint64_t last_step = 0;
     uint32_t multiple = 1, group = 0;
-    double cpu_s = 0.0, mission_duration_s = 0.0;
+    double compute_s = 0.0, mission_duration_s = 0.0;
     std::vector<std::string> outputs;
     std::string waiting_for;
   };
