@@ -4,47 +4,12 @@
 #include <cmath>
 #include <cstring>
 
+#include <ros/master.h>
 #include <ros/names.h>
 
 #include "common/errors.hpp"
 
 namespace hbt::cosim {
-
-/// Type-erased input buffered by the header stamp read from the serialized message
-/// (every message of the twin starts with std_msgs/Header: seq, stamp.sec, stamp.nsec).
-class Recorder::RawInput : public InputBase {
- public:
-  using Ptr = topic_tools::ShapeShifter::ConstPtr;
-  RawInput(ros::NodeHandle& nh, const std::string& topic, std::function<void()> cb)
-      : InputBase(topic), cb_(std::move(cb)) {
-    sub_ = nh.subscribe<topic_tools::ShapeShifter>(topic, 1000, &RawInput::callback, this,
-                                                   ros::TransportHints().tcpNoDelay());
-  }
-  bool has(const ros::Time& t) const override { return buf_.count(t) > 0; }
-  /// The message held at t (see participant.hpp: the Jacobi rule of an observer).
-  const Ptr& at(const ros::Time& t) const { return buf_.at(heldStamp(t)); }
-  void dropBefore(const ros::Time& t) override { buf_.erase(buf_.begin(), buf_.lower_bound(t)); }
-  uint32_t numPublishers() const override { return sub_.getNumPublishers(); }
-  std::string resolvedTopic() const override { return sub_.getTopic(); }
-
- private:
-  void callback(const Ptr& msg) {
-    const uint32_t n = msg->size();
-    if (n < 12) return;  // no header: not a twin message
-    bytes_.resize(n);
-    ros::serialization::OStream s(bytes_.data(), n);
-    msg->write(s);
-    uint32_t sec = 0, nsec = 0;
-    std::memcpy(&sec, bytes_.data() + 4, 4);
-    std::memcpy(&nsec, bytes_.data() + 8, 4);
-    buf_[ros::Time(sec, nsec)] = msg;
-    cb_();
-  }
-  ros::Subscriber sub_;
-  std::map<ros::Time, Ptr> buf_;
-  std::vector<uint8_t> bytes_;
-  std::function<void()> cb_;
-};
 
 void Recorder::configure() {
   std::string bag_file;
@@ -70,7 +35,7 @@ void Recorder::configure() {
   } catch (const std::exception& e) {
     throw InputError(where, "bag_file", std::string("cannot open '") + bag_file + "': " + e.what());
   }
-  for (const auto& t : topics) addTopic(t);
+  for (const auto& t : topics) addTopic(t, "");  // types not known yet: recorded type-erased
   std::string diag_file;
   if (pnh_.getParam("diagnostics_bag_file", diag_file) && !diag_file.empty()) {
     std::vector<std::string> from;
@@ -95,21 +60,27 @@ void Recorder::configure() {
   }
 }
 
-void Recorder::addTopic(const std::string& topic) {
-  auto in = std::make_unique<RawInput>(nh_, topic, arrivalCallback());
-  topics_.push_back(in.get());
+void Recorder::addTopic(const std::string& topic, const std::string& datatype) {
+  std::unique_ptr<InputBase> in;
+  topics_.push_back(makeRecordedTopic(datatype, nh_, topic, arrivalCallback(), in));
   addCustomInput(std::move(in));
   // written in a fixed order, whatever the order of discovery: sorted by name
-  std::sort(topics_.begin(), topics_.end(), [](const RawInput* a, const RawInput* b) { return a->topic() < b->topic(); });
+  std::sort(topics_.begin(), topics_.end(), [](const auto& a, const auto& b) { return a->topic() < b->topic(); });
 }
 
 void Recorder::topicsAnnounced(const std::vector<std::string>& topics) {
   if (!record_all_) return;
+  ros::master::V_TopicInfo advertised;  // every announced topic is advertised: its type is known
+  ros::master::getTopics(advertised);
   for (const auto& t : topics) {
     const std::string resolved = ros::names::resolve(nh_.getNamespace(), t);
     const bool known = std::any_of(topics_.begin(), topics_.end(),
-                                   [&](const RawInput* in) { return in->resolvedTopic() == resolved; });
-    if (!known) addTopic(t);
+                                   [&](const auto& r) { return r->input()->resolvedTopic() == resolved; });
+    if (known) continue;
+    std::string datatype;
+    for (const auto& info : advertised)
+      if (info.name == resolved) datatype = info.datatype;
+    addTopic(t, datatype);
   }
 }
 
@@ -145,21 +116,21 @@ void Recorder::step(const ros::Time& t, double) {
 
 void Recorder::writeAt(const ros::Time& t) {
   const ros::Time bag_t = t.isZero() ? ros::Time(0, 1) : t;  // rosbag refuses time 0
-  for (RawInput* in : topics_) bag_->write(in->topic(), bag_t, in->at(t));
+  for (const auto& r : topics_) r->write(*bag_, bag_t, t);
   last_written_ = t;
   wrote_any_ = true;
 }
 
 bool Recorder::readyToClose(const ros::Time& t_end) const {
-  for (RawInput* in : topics_)
-    if (!in->readyFor(t_end.toNSec())) return false;
+  for (const auto& r : topics_)
+    if (!r->input()->readyFor(t_end.toNSec())) return false;
   return diagnosticsComplete();
 }
 
 void Recorder::close(const ros::Time& t_end, bool aborted) {
   if (bag_) {
     bool ready = true;
-    for (RawInput* in : topics_) ready = ready && in->readyFor(t_end.toNSec());
+    for (const auto& r : topics_) ready = ready && r->input()->readyFor(t_end.toNSec());
     if (!aborted && (!wrote_any_ || last_written_ < t_end) && ready) writeAt(t_end);
     bag_->close();
     bag_.reset();

@@ -6,8 +6,8 @@
 // scenario give identical bag contents. It is an observer: stepped in the last group, at the
 // record period when that is a multiple of the base step (else at every base step). At FINISH it waits for the final outputs (stamped t_end), writes them
 // and closes the bag; at ABORT it writes what is complete and closes the bag, which stays
-// readable. Topics are recorded type-erased (topic_tools::ShapeShifter), so the recorder does not
-// depend on the message types.
+// readable. The twin's own message types are subscribed typed (no serialisation intra-process,
+// recorded_topic.hpp); any other type is recorded type-erased (topic_tools::ShapeShifter).
 //
 // Parameters (private): bag_file [path], topics [list of topic names; absent = every output
 // topic the participants announced: learnt from the stepper's SYNC table, so a new participant
@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "cosim/participant.hpp"
+#include "cosim/recorded_topic.hpp"
 
 namespace hbt::cosim {
 
@@ -50,9 +51,8 @@ class Recorder : public Participant {
   void close(const ros::Time& t_end, bool aborted) override;
 
  private:
-  class RawInput;
   void writeAt(const ros::Time& t);
-  void addTopic(const std::string& topic);
+  void addTopic(const std::string& topic, const std::string& datatype);
   void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& m);
   void writeDiagnostics(const diagnostic_msgs::DiagnosticArray& m);
   bool diagnosticsComplete() const;
@@ -62,7 +62,7 @@ class Recorder : public Participant {
   std::set<std::string> diag_waiting_;  // participants whose final status has not arrived
   double diag_wait_s_ = 2.0;
   mutable double diag_wait_since_ = -1.0;  // wall time [s] the close started waiting (-1: not)
-  std::vector<RawInput*> topics_;  // sorted by name; owned by the participant base
+  std::vector<std::unique_ptr<RecordedTopic>> topics_;  // sorted by name; inputs owned by the base
   ros::Time last_written_;
   uint64_t period_ns_ = 0;
   bool wrote_any_ = false;
