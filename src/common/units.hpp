@@ -9,6 +9,9 @@ constexpr double kKmh_per_mps = 3.6;
 constexpr double kRadps_per_rpm = 2.0 * kPi / 60.0;
 constexpr double kJ_per_kWh = 3.6e6;
 constexpr double kGravity_m_s2 = 9.81;  // VECTO uses 9.81 m/s^2
+// Standard atmosphere at sea level [Pa] (ISO 2533:1975 / ICAO; = 1 atm): the ambient pressure
+// wherever a scenario or an input gives none (the engine's reset and its command fallback).
+constexpr double kStandardAtmosphere_Pa = 101325.0;
 
 constexpr double rpmToRadps(double rpm) { return rpm * kRadps_per_rpm; }
 constexpr double radpsToRpm(double w_rad_s) { return w_rad_s / kRadps_per_rpm; }

@@ -62,7 +62,7 @@ ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
 void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::string& file,
                     std::vector<std::string> ignore_prefixes) {
   ignore_prefixes.push_back("config_file");
-  ignore_prefixes.push_back("loops/");  // engine loop switches (engine_ports.hpp), not model keys
+  ignore_prefixes.push_back("loops/");  // engine loop switches (src/engine/node/engine_ports.hpp), not model keys
   ignore_prefixes.push_back("cosim/");  // protocol keys read by the Participant base class
   const ParamSource src = loadParamSource(pnh, "", file);
   std::size_t model_keys = 0;

@@ -28,6 +28,7 @@
 #include <memory>
 #include <string>
 
+#include "common/units.hpp"
 #include "engine_1d/controllers.hpp"
 #include "engine_1d/engine_assembly.hpp"
 #include "engine_map/map_engine.hpp"
@@ -38,7 +39,7 @@ struct Engine1DInputs {
   double speed_rad_s = 0.0;        // imposed crank speed [rad/s]
   double torque_request_Nm = 0.0;  // requested brake torque [Nm]
   double ambient_T_K = 298.15;     // [K]
-  double ambient_p_Pa = 101325.0;  // [Pa]
+  double ambient_p_Pa = units::kStandardAtmosphere_Pa;  // [Pa]
   double back_pressure_Pa = 0.0;   // turbine-outlet system back pressure [Pa]; <= 0: default model
   double coolant_T_K = 363.15;     // [K]
   bool fuel_enabled = true;        // false: fuel cut / engine off
@@ -92,7 +93,7 @@ class Engine1D {
 
   /// Restarts at speed w [rad/s] with an initial state estimated for torque T [Nm].
   void reset(double speed_rad_s, double torque_Nm = 0.0, double ambient_T_K = 298.15,
-             double ambient_p_Pa = 101325.0, double coolant_T_K = 363.15);
+             double ambient_p_Pa = units::kStandardAtmosphere_Pa, double coolant_T_K = 363.15);
   const Engine1DOutputs& step(double dt_macro_s, const Engine1DInputs& in);
   const Engine1DOutputs& outputs() const { return out_; }
 

@@ -23,6 +23,8 @@ void MapEngineParams::declare(ParamSet& ps) {
   ps.add("pt1_file", pt1_file, "VECTO PT1 table (time constant vs engine speed)");
   ps.add("target_peak_torque_Nm", target_peak_torque_Nm, "Nm", 100.0, 5000.0, "peak torque after scaling");
   ps.add("target_peak_power_W", target_peak_power_W, "W", 1e4, 1e6, "peak power after scaling");
+  ps.add("idle_speed_rad_s", idle_speed_rad_s, "rad/s", 30.0, 150.0,
+         "engine idle speed: the start speed of the twin's engine (map and 1D)");
   ps.add("scale_speed_axis", scale_speed_axis, "scale the speed axis so that peak power = target");
   ps.add("pt1_time_constant_factor", pt1_time_constant_factor, "-", 0.0, 10.0, "multiplier on PT1 tau");
   ps.add("torque_decrease_time_constant_s", torque_decrease_time_constant_s, "s", 0.0, 10.0,
@@ -82,7 +84,7 @@ MapEngine::MapEngine(const MapEngineParams& p, const std::string& base_dir) : p_
   engine_map::peakPower(fld_, &w_rated);
   fuel_ref_kg_s_ = steadyFuel(w_rated, fullLoadTorque(w_rated));
   exhaust_ref_kg_s_ = computeGasPath(p_.gas, w_rated, fullLoadTorque(w_rated), 1.0, fuel_ref_kg_s_,
-                                     fuel_ref_kg_s_, 298.15, 101325.0).exhaust_mass_flow_kg_s;
+                                     fuel_ref_kg_s_, 298.15, units::kStandardAtmosphere_Pa).exhaust_mass_flow_kg_s;
   if (!(fuel_ref_kg_s_ > 0.0))
     throw InputError(map_pts_.source, "fuel consumption", "no positive fuel flow at rated power");
   const auto checkPositive = [](double v, const char* key) {
@@ -120,7 +122,7 @@ double MapEngine::steadyFuel(double w, double T) const {
   return std::max(0.0, fuel_(wc, Tc)) * s;
 }
 
-void MapEngine::reset(double w, double T, double ambient_T_K) {
+void MapEngine::reset(double w, double T, double ambient_T_K, double ambient_p_Pa) {
   out_ = MapEngineOutputs{};
   torque_ = std::clamp(T, motoringTorque(w), fullLoadTorque(w));
   out_.brake_torque_Nm = torque_;
@@ -132,7 +134,7 @@ void MapEngine::reset(double w, double T, double ambient_T_K) {
   out_.fuel_cut = out_.fuel_mass_flow_kg_s <= 0.0;
   const double tfl = out_.max_torque_Nm;
   out_.gas = computeGasPath(p_.gas, w, torque_, tfl > 0.0 ? torque_ / tfl : 0.0,
-                            out_.fuel_mass_flow_kg_s, fuel_ref_kg_s_, ambient_T_K, 101325.0);
+                            out_.fuel_mass_flow_kg_s, fuel_ref_kg_s_, ambient_T_K, ambient_p_Pa);
 }
 
 const MapEngineOutputs& MapEngine::step(double dt, const MapEngineInputs& in) {

@@ -39,6 +39,7 @@
 
 #include "common/params.hpp"
 #include "common/table1d.hpp"
+#include "common/units.hpp"
 #include "engine_map/engine_scaling.hpp"
 #include "engine_map/gas_path.hpp"
 #include "engine_map/scattered_map.hpp"
@@ -52,6 +53,10 @@ struct MapEngineParams {
   std::string pt1_file = "config/data/vehicle/declaration_2015/PT1.csv";
   double target_peak_torque_Nm = 1100.0;   // SPEC §3
   double target_peak_power_W = 210000.0;   // SPEC §3
+  // Idle speed [rad/s] of the engine (not scaled with the speed axis): where the twin's engine
+  // starts, whichever model runs it (engine/engine_model.hpp; the 1D engine reads this file as
+  // its reference). 700 rpm: VECTO 'Generic primary bus 41 Engine' (config/data/engine/README.txt).
+  double idle_speed_rad_s = 73.3038;
   bool scale_speed_axis = true;            // false: torque-only scaling (power = f_T P_ref)
   double pt1_time_constant_factor = 1.0;   // multiplier on the VECTO PT1 τ [-]
   double torque_decrease_time_constant_s = 0.0;  // τ_dec [s]; 0 = instantaneous decrease
@@ -73,7 +78,7 @@ struct MapEngineInputs {
   double speed_rad_s = 0.0;          // imposed crank speed ω [rad/s]
   double torque_request_Nm = 0.0;    // requested brake torque [Nm]
   double ambient_T_K = 298.15;       // ambient = air-filter inlet temperature [K]
-  double ambient_p_Pa = 101325.0;    // ambient pressure [Pa]
+  double ambient_p_Pa = units::kStandardAtmosphere_Pa;  // ambient pressure [Pa]
   bool fuel_enabled = true;          // false = engine off / fuel cut (torque = motoring)
   double coolant_T_K = 0.0;          // engine coolant temperature [K]; <= 0: warm map, no correction
   double back_pressure_Pa = 0.0;     // turbine-outlet (ATS inlet) pressure [Pa]; <= 0: map's own
@@ -105,8 +110,10 @@ class MapEngine {
   /// Loads and scales the data. Throws InputError (file + key) on bad data or parameters.
   explicit MapEngine(const MapEngineParams& p, const std::string& base_dir = "");
 
-  /// Starts at speed ω0 [rad/s] with brake torque T0 [Nm] (clamped to the limits).
-  void reset(double speed_rad_s, double torque_Nm = 0.0, double ambient_T_K = 298.15);
+  /// Starts at speed ω0 [rad/s] with brake torque T0 [Nm] (clamped to the limits), ambient T [K]
+  /// and p [Pa] (the gas path of the start state).
+  void reset(double speed_rad_s, double torque_Nm = 0.0, double ambient_T_K = 298.15,
+             double ambient_p_Pa = units::kStandardAtmosphere_Pa);
   /// Advances by dt_s [s] (> 0). Throws ModelDivergence on non-finite inputs.
   const MapEngineOutputs& step(double dt_s, const MapEngineInputs& in);
   const MapEngineOutputs& outputs() const { return out_; }

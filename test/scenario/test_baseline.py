@@ -214,6 +214,13 @@ class Failures(unittest.TestCase):
         cfg = self.config_copy("engine_map.yaml", lambda t: t + "\ncosim:\n  macro_step_s: 0.015\n")
         self.expect_rejected("engine_map.yaml", "cosim/macro_step_s", config=cfg)
 
+    def test_unknown_engine_model(self):
+        """The engine participant's `model` (launch argument engine) is map | 1d: anything else
+        stops the run before the first step naming the key (here with a YAML for it present)."""
+        cfg = self.config_copy()
+        shutil.copy(os.path.join(cfg, "engine_map.yaml"), os.path.join(cfg, "engine_v8.yaml"))
+        self.expect_rejected("engine", "'model': 'v8' is not an engine model: map | 1d", config=cfg, engine="v8")
+
     def test_bad_order(self):
         self.expect_rejected("stepper", "'order'", order="[[vehicle], [engine], [vehicle]]")
 

@@ -155,7 +155,7 @@ class MultiHost(unittest.TestCase):
         self.assertIn("remote[%s-0]: ssh connection created" % self.hosts.remote_ip, log)
         # /run/netns/<ns> is a bind mount of the namespace: its inode names it (net:[inode])
         remote_ns = "net:[%d]" % os.stat("/run/netns/%s" % self.hosts.ns).st_ino
-        engines = [p for p in self.procs_two if p["comm"] == "engine_map_node"]
+        engines = [p for p in self.procs_two if p["comm"] == "engine_node"]
         self.assertTrue(engines, "no engine process seen during the two-host run")
         self.assertEqual({p["netns"] for p in engines}, {remote_ns})
         others = [p for p in self.procs_two if p["comm"] in ("stepper", "rosmaster")]
@@ -186,13 +186,13 @@ class MultiHost(unittest.TestCase):
         by_comm = {}
         for p in self.procs_one:
             by_comm.setdefault(p["comm"], []).append(p)
-        for comm in ("rosmaster", "stepper", "recorder", "vehicle_node", "engine_map_node"):
+        for comm in ("rosmaster", "stepper", "recorder", "vehicle_node", "engine_node"):
             self.assertIn(comm, by_comm, "process %s not seen; seen: %s" % (comm, sorted(by_comm)))
         for p in by_comm["rosmaster"]:
             self.assertTrue(p["listen"] and all(a.startswith("127.0.0.1:") for a in p["listen"]), p)
         for p in self.procs_one:
             wildcard = [a for a in p["listen"] if not a.startswith("127.")]
-            if p["comm"] in ("nodelet", "stepper", "recorder", "vehicle_node", "engine_map_node",
+            if p["comm"] in ("nodelet", "stepper", "recorder", "vehicle_node", "engine_node",
                              "aftertreatment_", "cooling_node", "rosout"):
                 self.assertLessEqual(len(wildcard), 1, p)  # the XML-RPC slave server
                 self.assertTrue(any(a.startswith("127.0.0.1:") for a in p["listen"]), p)  # TCPROS

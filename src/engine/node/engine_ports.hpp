@@ -1,5 +1,5 @@
-// The engine's outputs as messages, shared by every engine model's participant (map and 1D):
-// one place that fills EngineState, ExhaustState and EngineHeat from model-neutral values (SI).
+// The engine participant's topics: its closed-loop inputs from the thermal nodes and its three
+// output messages filled from the model-neutral engine::EngineOutputs (SI, engine_model.hpp).
 #pragma once
 #include <hybrid_bus_twin/AftertreatmentState.h>
 #include <boost/make_shared.hpp>
@@ -10,32 +10,19 @@
 #include <ros/ros.h>
 
 #include "cosim/input_buffer.hpp"
+#include "engine/engine_model.hpp"
 
-namespace hbt::cosim {
-
-struct EnginePortValues {
-  double speed_rad_s = 0, brake_torque_Nm = 0, max_torque_Nm = 0, min_torque_Nm = 0;
-  double fuel_mass_flow_kg_s = 0, fuel_mass_kg = 0;             // [kg/s], cumulative [kg]
-  double positive_work_J = 0, motoring_work_J = 0;              // cumulative [J]
-  double boost_pressure_Pa = 0, turbo_speed_rad_s = 0, lambda = 0, cpu_time_s = 0;
-  double charge_air_T_K = 0;                                    // intake manifold [K]
-  double exhaust_mass_flow_kg_s = 0, exhaust_T_K = 0;           // turbine outlet
-  double y_O2 = 0, y_CO2 = 0, y_H2O = 0, y_N2 = 0;              // mass fractions [-]
-  double nox_mass_flow_kg_s = 0, nox_mass_kg = 0;               // as NO2
-  double heat_to_coolant_W = 0, heat_to_coolant_J = 0;           // [W], cumulative [J]
-  double coolant_T_K = 0, back_pressure_Pa = 0;  // loop inputs the engine used (0 = none)
-  double friction_correction_Nm = 0, pumping_correction_Nm = 0;  // map engine: cold oil, back-pressure
-};
+namespace hbt::engine {
 
 /// The engine's closed loops with the thermal nodes: coolant temperature from /cooling/state and
 /// turbine-outlet back-pressure from /aftertreatment/state, each read (stamped t_k) only when the
 /// scenario runs that node: private parameters loops/cooling and loops/aftertreatment (bool, set
-/// by launch/include/engine.launch). Without them the engine keeps its own defaults.
+/// by launch/include/urban.launch). Without them 0 = none (the model's own defaults).
 struct EngineLoopInputs {
-  Input<hybrid_bus_twin::CoolingState>* cooling = nullptr;
-  Input<hybrid_bus_twin::AftertreatmentState>* aftertreatment = nullptr;
-  double coolantAt(const ros::Time& t, double fallback_K) const {
-    return cooling ? cooling->at(t).coolant_ht_temperature_k : fallback_K;
+  cosim::Input<hybrid_bus_twin::CoolingState>* cooling = nullptr;
+  cosim::Input<hybrid_bus_twin::AftertreatmentState>* aftertreatment = nullptr;
+  double coolantAt(const ros::Time& t) const {
+    return cooling ? cooling->at(t).coolant_ht_temperature_k : 0.0;
   }
   double backPressureAt(const ros::Time& t) const {
     return aftertreatment ? aftertreatment->at(t).back_pressure_pa : 0.0;
@@ -49,7 +36,7 @@ class EnginePorts {
   EnginePorts() = default;
   EnginePorts(ros::Publisher state, ros::Publisher exhaust, ros::Publisher heat)
       : state_(std::move(state)), exhaust_(std::move(exhaust)), heat_(std::move(heat)) {}
-  void publish(const ros::Time& t, const EnginePortValues& v) const {
+  void publish(const ros::Time& t, const EngineOutputs& v) const {
     hybrid_bus_twin::EngineState s;
     s.header.stamp = t;
     s.engine_speed_rad_s = v.speed_rad_s;
@@ -93,4 +80,4 @@ class EnginePorts {
   ros::Publisher state_, exhaust_, heat_;
 };
 
-}  // namespace hbt::cosim
+}  // namespace hbt::engine

@@ -1,0 +1,68 @@
+#include "engine/node/engine_participant.hpp"
+
+#include "common/units.hpp"
+#include "cosim/param_loader.hpp"
+#include "engine/node/engine_model_factory.hpp"
+
+namespace hbt::engine {
+
+void EngineParticipant::configure() {
+  std::string model;
+  const std::string where = pnh_.getNamespace() + " (private parameters; launch argument engine)";
+  if (!pnh_.getParam("model", model))
+    throw InputError(where, "model", "missing or not a string: the engine model, map | 1d");
+  checkEngineModelName(model, where, "model");
+  ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
+  model_ = makeEngineModel(model, nh_, pnh_, configFile());
+  model_->reset(ambient_T_K_);  // idle speed, torque 0, standard atmosphere
+  bool hybrid = false;  // hybrid: the EMS's share of the demand (loops/ems), else the vehicle's
+  pnh_.param("loops/ems", hybrid, false);
+  command_ = &addInput<hybrid_bus_twin::EngineCommand>(hybrid ? "/ems/engine_command" : "/vehicle/engine_command");
+  bool cooling = false, ats = false;
+  pnh_.param("loops/cooling", cooling, false);
+  pnh_.param("loops/aftertreatment", ats, false);
+  if (cooling) loops_.cooling = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
+  if (ats) loops_.aftertreatment = &addInput<hybrid_bus_twin::AftertreatmentState>("/aftertreatment/state");
+  ports_ = EnginePorts(addOutput<hybrid_bus_twin::EngineState>("/engine/state"),
+                       addOutput<hybrid_bus_twin::ExhaustState>("/engine/exhaust"),
+                       addOutput<hybrid_bus_twin::EngineHeat>("/engine/heat"));
+  boost_limited_ = &addWarning("boost_limited", diagnosticsParams().engine.duration_s);
+}
+
+void EngineParticipant::checkWarnings(cosim::core::Nanos t) {
+  const auto& d = diagnosticsParams().engine;
+  if (boost_limited_->update(t, model_->boostLimited(d.margin_nm)))
+    boost_limited_->setMessage(model_->boostLimitedMessage(d.duration_s));
+}
+
+void EngineParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {
+  using cosim::core::formatNumber;
+  using K = EngineDiagnosticValue::Kind;
+  kv.push_back({"model", model_->name()});
+  kv.push_back({"speed_rpm", formatNumber(units::radpsToRpm(model_->outputs().speed_rad_s))});
+  kv.push_back({"torque_request_nm", formatNumber(model_->inputs().torque_request_Nm)});
+  kv.push_back({"brake_torque_nm", formatNumber(model_->outputs().brake_torque_Nm)});
+  std::vector<EngineDiagnosticValue> own;
+  model_->diagnosticValues(own);
+  for (const auto& v : own)
+    kv.push_back({v.key, v.kind == K::kCount  ? std::to_string(static_cast<long long>(v.value))
+                         : v.kind == K::kFlag ? (v.value != 0.0 ? "true" : "false")
+                                              : formatNumber(v.value)});
+}
+
+void EngineParticipant::step(const ros::Time& t, double dt_s) {
+  const auto& cmd = command_->at(t);
+  EngineInputs in;
+  in.speed_rad_s = cmd.engine_speed_rad_s;
+  in.torque_request_Nm = cmd.torque_request_nm;
+  in.ambient_T_K = cmd.ambient_temperature_k > 0.0 ? cmd.ambient_temperature_k : ambient_T_K_;
+  in.ambient_p_Pa = cmd.ambient_pressure_pa;  // <= 0: the standard atmosphere (EngineModel::step)
+  in.fuel_enabled = cmd.engine_on;
+  in.coolant_T_K = loops_.coolantAt(t);           // 0 = no cooling node
+  in.back_pressure_Pa = loops_.backPressureAt(t);  // 0 = no aftertreatment node
+  model_->step(dt_s, in);
+}
+
+void EngineParticipant::publishOutputs(const ros::Time& t) { ports_.publish(t, model_->outputs()); }
+
+}  // namespace hbt::engine

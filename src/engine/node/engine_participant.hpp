@@ -1,0 +1,59 @@
+// ROS bridge of the engine, whichever model runs it (private parameter `model`: map | 1d, the
+// launch argument engine): converts messages and parameters, nothing else. Models behind the
+// ROS-free interface engine::EngineModel (../engine_model.hpp: its units, equations and the start,
+// ambient, loop and exhaust-temperature policies): engine_map::MapEngineModel (VECTO maps + PT1
+// torque build-up) and engine1d::Engine1DModel (crank-angle-resolved 1D engine), built by
+// makeEngineModel (engine_model_factory.hpp).
+//
+// Inputs  (stamped t_k): /vehicle/engine_command (EngineCommand: imposed speed, torque request,
+//                        engine on, ambient T and p; /ems/engine_command in the hybrid, private
+//                        parameter loops/ems); /cooling/state (coolant temperature) and
+//                        /aftertreatment/state (back-pressure) when loops/cooling and
+//                        loops/aftertreatment are set (engine_ports.hpp).
+// Outputs (stamped t_k): /engine/state (EngineState), /engine/exhaust (ExhaustState),
+//                        /engine/heat (EngineHeat).
+// Parameters: `model` (map | 1d, required; anything else: InputError naming the key);
+// private namespace = the model's YAML (config/engine_map.yaml | config/engine_1d.yaml, named by
+// `config_file`); `solver` (1d only, fsm | tvd, optional); loops/*; /scenario/ambient_temperature_c
+// (the start temperature; the command's ambient temperature drives the steps), /scenario/package_dir.
+// Initial state: the model's reset() at its idle speed (engine_map.yaml idle_speed_rad_s), torque
+// 0, the scenario ambient temperature and the standard atmosphere (units::kStandardAtmosphere_Pa);
+// a command without an ambient pressure (<= 0) means the standard atmosphere as well.
+// Diagnostics (README "Diagnostics"): warning boost_limited (EngineModel::boostLimited: map = the
+// request above the PT1 dynamic full load, the turbo's build-up, by more than engine/margin_nm
+// while that limit is itself below the static full load; 1D = the smoke limiter -- minimum
+// lambda -- holds the fuel; for engine/duration_s, config/diagnostics.yaml); key/values model,
+// speed, request, brake torque, then the model's own (map: dynamic and static full load, fuel
+// cut; 1D: gas-dynamic/cylinder sub-steps in the window and in all, lambda, boost, smoke limiter).
+#pragma once
+#include <hybrid_bus_twin/EngineCommand.h>
+
+#include <memory>
+
+#include "cosim/participant.hpp"
+#include "engine/engine_model.hpp"
+#include "engine/node/engine_ports.hpp"
+
+namespace hbt::engine {
+
+class EngineParticipant : public cosim::Participant {
+ public:
+  EngineParticipant(ros::NodeHandle nh, ros::NodeHandle pnh) : Participant(nh, pnh) {}
+
+ protected:
+  void configure() override;
+  void publishOutputs(const ros::Time& t) override;
+  void step(const ros::Time& t, double dt_s) override;
+  void checkWarnings(cosim::core::Nanos t) override;
+  void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
+
+ private:
+  std::unique_ptr<EngineModel> model_;
+  cosim::Input<hybrid_bus_twin::EngineCommand>* command_ = nullptr;
+  EngineLoopInputs loops_;
+  EnginePorts ports_;
+  double ambient_T_K_ = 298.15;  // scenario ambient [K]: the start, and a command without one
+  cosim::core::Warning* boost_limited_ = nullptr;
+};
+
+}  // namespace hbt::engine

@@ -1,0 +1,81 @@
+#include "engine_1d/engine_1d_model.hpp"
+
+#include <cstdio>
+
+#include "common/units.hpp"
+
+namespace hbt::engine1d {
+
+Engine1DModel::Engine1DModel(const Engine1DParams& p, const std::string& repo_root)
+    : engine_(p, repo_root) {}
+
+void Engine1DModel::resetModel(const engine::EngineInputs& in) {
+  engine_.reset(in.speed_rad_s, 0.0, in.ambient_T_K, in.ambient_p_Pa, kWarmCoolant_K);
+  gas_steps_at_status_ = 0;
+  copyOutputs(in.speed_rad_s);
+}
+
+void Engine1DModel::stepModel(double dt_s, const engine::EngineInputs& in) {
+  Engine1DInputs e;
+  e.speed_rad_s = in.speed_rad_s;
+  e.torque_request_Nm = in.torque_request_Nm;
+  e.ambient_T_K = in.ambient_T_K;
+  e.ambient_p_Pa = in.ambient_p_Pa;
+  e.back_pressure_Pa = in.back_pressure_Pa;  // <= 0: the engine's own orifice law
+  e.coolant_T_K = in.coolant_T_K > 0.0 ? in.coolant_T_K : kWarmCoolant_K;
+  e.fuel_enabled = in.fuel_enabled;
+  engine_.step(dt_s, e);
+  copyOutputs(in.speed_rad_s);
+}
+
+void Engine1DModel::copyOutputs(double w) {
+  const Engine1DOutputs& o = engine_.outputs();
+  engine::EngineOutputs& v = out_;
+  v.brake_torque_Nm = o.brake_torque_Nm;
+  v.max_torque_Nm = engine_.fullLoadTorque(w);
+  v.min_torque_Nm = engine_.motoringTorque(w);
+  v.friction_correction_Nm = v.pumping_correction_Nm = 0.0;
+  v.fuel_mass_flow_kg_s = o.fuel_mass_flow_kg_s;
+  v.fuel_mass_kg = o.fuel_mass_kg;
+  v.positive_work_J = o.positive_work_J;
+  v.motoring_work_J = o.motoring_work_J;
+  v.boost_pressure_Pa = o.boost_pressure_Pa;
+  v.charge_air_T_K = o.intake_manifold_T_K;
+  v.turbo_speed_rad_s = o.turbo_speed_rad_s;
+  v.lambda = o.lambda;
+  v.cpu_time_s = o.cpu_time_s;
+  v.exhaust_mass_flow_kg_s = o.exhaust_mass_flow_kg_s;
+  v.exhaust_T_K = o.exhaust_T_K;
+  v.y_O2 = o.exhaust.y_O2;
+  v.y_CO2 = o.exhaust.y_CO2;
+  v.y_H2O = o.exhaust.y_H2O;
+  v.y_N2 = o.exhaust.y_N2;
+  v.nox_mass_flow_kg_s = o.nox_mass_flow_kg_s;
+  v.nox_mass_kg = o.nox_mass_kg;
+  v.heat_to_coolant_W = o.coolant_heat_W;
+  v.heat_to_coolant_J = o.coolant_heat_J;
+}
+
+std::string Engine1DModel::boostLimitedMessage(double duration_s) const {
+  const Engine1DOutputs& o = engine_.outputs();
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "smoke limiter holding the fuel for %.1f s: lambda %.2f, boost %.0f kPa (target %.0f kPa), "
+                "request %.0f Nm, brake torque %.0f Nm at %.0f rpm", duration_s, o.lambda,
+                1e-3 * o.boost_pressure_Pa, 1e-3 * o.boost_target_Pa, inputs().torque_request_Nm,
+                o.brake_torque_Nm, units::radpsToRpm(inputs().speed_rad_s));
+  return buf;
+}
+
+void Engine1DModel::diagnosticValues(std::vector<engine::EngineDiagnosticValue>& kv) {
+  using K = engine::EngineDiagnosticValue::Kind;
+  const Engine1DOutputs& o = engine_.outputs();
+  kv.push_back({"gas_steps_window", static_cast<double>(o.gas_steps - gas_steps_at_status_), K::kCount});
+  kv.push_back({"gas_steps_total", static_cast<double>(o.gas_steps), K::kCount});
+  gas_steps_at_status_ = o.gas_steps;
+  kv.push_back({"lambda", o.lambda, K::kNumber});
+  kv.push_back({"boost_kpa", 1e-3 * o.boost_pressure_Pa, K::kNumber});
+  kv.push_back({"smoke_limited", o.smoke_limited ? 1.0 : 0.0, K::kFlag});
+}
+
+}  // namespace hbt::engine1d
