@@ -70,13 +70,17 @@ void Recorder::addTopic(const std::string& topic, const std::string& datatype) {
 
 void Recorder::topicsAnnounced(const std::vector<std::string>& topics) {
   if (!record_all_) return;
-  ros::master::V_TopicInfo advertised;  // every announced topic is advertised: its type is known
-  ros::master::getTopics(advertised);
+  std::vector<std::pair<std::string, std::string>> missing;  // topic, resolved name
   for (const auto& t : topics) {
     const std::string resolved = ros::names::resolve(nh_.getNamespace(), t);
-    const bool known = std::any_of(topics_.begin(), topics_.end(),
-                                   [&](const auto& r) { return r->input()->resolvedTopic() == resolved; });
-    if (known) continue;
+    if (std::none_of(topics_.begin(), topics_.end(),
+                     [&](const auto& r) { return r->input()->resolvedTopic() == resolved; }))
+      missing.emplace_back(t, resolved);
+  }
+  if (missing.empty()) return;  // later SYNC rounds: nothing to ask the master
+  ros::master::V_TopicInfo advertised;  // every announced topic is advertised: its type is known
+  ros::master::getTopics(advertised);
+  for (const auto& [t, resolved] : missing) {
     std::string datatype;
     for (const auto& info : advertised)
       if (info.name == resolved) datatype = info.datatype;

@@ -39,6 +39,7 @@ std::string Stepper::readParams(core::StepperConfig& cfg) {
   pnh_.param("until_s", cfg.until_s, 0.0);
   pnh_.param("timeout_s", cfg.timeout_s, 1.0);
   pnh_.param("startup_timeout_s", cfg.startup_timeout_s, 60.0);
+  pnh_.param("clock_period_s", cfg.clock_period_s, 0.1);  // /clock for observers: 10 Hz of sim time
   pnh_.getParam("participants", cfg.participants);
   const std::string bad_order = cfg.where + ": key 'order': expected a list of groups, each a list of participant names";
   XmlRpc::XmlRpcValue order;
@@ -65,12 +66,7 @@ bool Stepper::start() {
   pnh_.param<std::string>("status_file", status_file_, "");
   pnh_.param("progress", progress_, true);
   core::StepperConfig cfg;
-  std::string error = readParams(cfg);
-  double clock_period_s = 0.1;
-  pnh_.param("clock_period_s", clock_period_s, 0.1);
-  if (error.empty() && !(clock_period_s >= 0.0 && clock_period_s <= 3600.0))
-    error = cfg.where + ": key 'clock_period_s': must be in [0, 3600] s";
-  clock_period_ns_ = static_cast<core::Nanos>(std::llround(clock_period_s * 1e9));
+  const std::string error = readParams(cfg);
   if (!error.empty()) {
     ROS_FATAL_STREAM(error);
     writeStatus("error", error, 0.0, 0, 0.0);
@@ -122,12 +118,6 @@ void Stepper::sendCommand(const core::Command& c) {
 }
 
 void Stepper::publishClock(core::Nanos t) {
-  // /clock is for observers only (rviz, log stamps, rosbag tools): the lock-step never reads it.
-  // Every ROS process with use_sim_time receives each message, so it goes out every
-  // clock_period_s of simulated time, not at every base step.
-  if (t != 0 && clock_sent_ && t - last_clock_ < clock_period_ns_) return;
-  clock_sent_ = true;
-  last_clock_ = t;
   rosgraph_msgs::Clock c;
   c.clock = fromNanos(t);
   clock_pub_.publish(boost::make_shared<rosgraph_msgs::Clock>(c));

@@ -54,8 +54,6 @@ class Stepper : public core::StepperTransport {
   ros::WallTimer timer_;
   std::unique_ptr<core::StepperCore> core_;
   bool progress_ = true;
-  core::Nanos clock_period_ns_ = 0, last_clock_ = 0;  // /clock sample period, last sent [ns sim]
-  bool clock_sent_ = false;
   std::string status_file_;
   std::chrono::steady_clock::time_point epoch_, last_print_;
 };

@@ -63,7 +63,7 @@ TEST(CosimCore, NormalRunEndsAtUntilWithEveryStampRecorded) {
     EXPECT_FALSE(p->closed_aborted[0]);
     EXPECT_EQ(p->closed_at[0], 50 * MS);
   }
-  EXPECT_EQ(bus.clocks.size(), 6u);  // begin (0) + one per base step
+  EXPECT_EQ(bus.clocks, (std::vector<Nanos>{0, 10 * MS, 20 * MS, 30 * MS, 40 * MS}));  // t_k of each base step
   EXPECT_EQ(s.stepCommands(), 5u);   // one group: one STEP per base step (Jacobi as before)
 }
 
@@ -90,6 +90,21 @@ TEST(CosimCore, RecorderWithoutTopicListRecordsEveryAnnouncedOutput) {
     EXPECT_EQ(r.records[i].read, ref.records[i].read);  // both topics, the same stamps
     EXPECT_EQ(r.records[i].read.size(), 2u);
   }
+}
+
+TEST(CosimCore, ClockOnlyEveryClockPeriod) {
+  // /clock is for observers: at t = 0, then once per clock_period_s of simulated time
+  Bus bus;
+  addPair(bus);
+  StepperConfig cfg = config({"a", "b"}, 0.2);
+  cfg.clock_period_s = 0.05;
+  bus.run(cfg);
+  ASSERT_TRUE(bus.completed);
+  EXPECT_FALSE(bus.stepper->aborted());
+  EXPECT_EQ(bus.stepper->step(), 20u);  // every base step still stepped
+  EXPECT_EQ(bus.clocks, (std::vector<Nanos>{0, 50 * MS, 100 * MS, 150 * MS}));
+  cfg.clock_period_s = -1.0;
+  EXPECT_NE(validate(cfg).find("'clock_period_s'"), std::string::npos);
 }
 
 TEST(CosimCore, EndsByFinishedOnly) {

@@ -16,6 +16,7 @@ std::string validate(const StepperConfig& c) {
   if (!(c.dt_s >= 1e-4 && c.dt_s <= 1.0)) return w + "'dt_s': macro step must be in [1e-4, 1] s";
   if (!(c.timeout_s > 0.0) || !(c.startup_timeout_s > 0.0)) return w + "'timeout_s': must be > 0";
   if (std::isnan(c.until_s)) return w + "'until_s': NaN";
+  if (!(c.clock_period_s >= 0.0 && c.clock_period_s <= 3600.0)) return w + "'clock_period_s': must be in [0, 3600] s";
   std::set<std::string> seen;
   for (std::size_t g = 0; g < c.order.size(); ++g) {
     if (c.order[g].empty()) return w + "'order': group " + std::to_string(g + 1) + " is empty";
@@ -30,6 +31,7 @@ std::string validate(const StepperConfig& c) {
 
 StepperCore::StepperCore(StepperConfig cfg, StepperTransport& tr) : cfg_(std::move(cfg)), tr_(tr) {
   dt_ns_ = toNanos(cfg_.dt_s);
+  clock_period_ns_ = toNanos(cfg_.clock_period_s);
   for (const auto& n : cfg_.participants) peers_[n] = Peer{};
 }
 
@@ -41,7 +43,13 @@ double StepperCore::missionDuration_s() const {
 
 void StepperCore::begin(double wall_s) {
   wall0_ = phase_since_ = wall_s;
-  tr_.publishClock(0);
+  clockAt(0);
+}
+
+void StepperCore::clockAt(Nanos t) {
+  if (last_clock_ >= 0 && t - last_clock_ < std::max<Nanos>(clock_period_ns_, 1)) return;
+  last_clock_ = t;
+  tr_.publishClock(t);
 }
 
 std::string StepperCore::missing(bool (*pred)(const Peer&)) const {
@@ -164,7 +172,7 @@ void StepperCore::fillTable(Table& table) const {
 }
 
 void StepperCore::beginStep(double wall_s) {
-  tr_.publishClock(t_);
+  clockAt(t_);
   group_ = 0;
   finished_seen_ = false;
   commandNextGroup(wall_s);

@@ -36,6 +36,10 @@ struct StepperConfig {
   std::vector<std::string> participants;
   std::vector<std::vector<std::string>> order;  // empty: all in one group
   double dt_s = 0.01, until_s = 0.0, timeout_s = 1.0, startup_timeout_s = 60.0;
+  /// /clock at t = 0, then at most once per this simulated period [s] (0 = every base step): it
+  /// is for observers only (rviz, log stamps, rosbag tools), nothing of the protocol reads it,
+  /// and every ROS process with use_sim_time receives each message.
+  double clock_period_s = 0.0;
   std::string where = "stepper parameters (launch file)";
 };
 
@@ -109,6 +113,8 @@ class StepperCore {
   std::vector<std::vector<std::string>> groups_;
   Phase phase_ = Phase::Announce;
   Nanos dt_ns_ = 0, t_ = 0;
+  Nanos clock_period_ns_ = 0, last_clock_ = -1;  // /clock sample period, last sent (-1: none)
+  void clockAt(Nanos t);
   uint64_t k_ = 0, sync_round_ = 0, step_commands_ = 0;
   std::size_t group_ = 0;
   bool finished_seen_ = false, aborted_ = false;
