@@ -44,6 +44,7 @@
 // (F = NOx mass flows low-passed with lightoff/filter_s), with F_in >= lightoff/min_nox_kg_s and
 // the SCR mean wall temperature >= the dosing release temperature (the brick is warm).
 #pragma once
+#include "common/units.hpp"
 #include <array>
 #include <memory>
 #include <vector>
@@ -65,7 +66,7 @@ struct AtsInputs {
   double hc_mass_flow_kg_s = 0.0;       ///< [kg/s]
   double co_mass_flow_kg_s = 0.0;       ///< [kg/s]
   double ambient_T_K = 298.15;
-  double ambient_p_Pa = 101325.0;
+  double ambient_p_Pa = units::kStandardAtmosphere_Pa;
   double vehicle_speed_m_s = 0.0;
 };
 
@@ -101,7 +102,7 @@ struct AtsOutputs {
   std::array<double, kNumBricks> brick_dp_Pa{};    ///< pressure drop per brick
   double muffler_dp_Pa = 0.0;
   double outlet_T_K = 298.15;             ///< tailpipe gas temperature
-  double back_pressure_Pa = 101325.0;     ///< absolute, turbine outlet
+  double back_pressure_Pa = units::kStandardAtmosphere_Pa;     ///< absolute, turbine outlet
   double tailpipe_nox_kg_s = 0.0, tailpipe_nox_kg = 0.0;   ///< as NO2
   double engine_nox_kg = 0.0;
   double nh3_slip_kg_s = 0.0, nh3_slip_kg = 0.0;           ///< at the tailpipe (after ASC)
@@ -126,7 +127,7 @@ class Aftertreatment {
   explicit Aftertreatment(const AtsParams& p);
 
   /// Cold start: every brick (substrate, washcoat, can) at T_K, SCR coverage from the parameters.
-  void reset(double T_K, double ambient_p_Pa = 101325.0);
+  void reset(double T_K, double ambient_p_Pa = units::kStandardAtmosphere_Pa);
   /// Advances by dt [s]. Throws ModelDivergence (naming brick and quantity) on a non-physical
   /// state or input.
   void step(double dt, const AtsInputs& in);

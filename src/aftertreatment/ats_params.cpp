@@ -93,7 +93,6 @@ void AtsParams::declare(ParamSet& ps) {
   ps.add("contraction_k", contraction_k, "-", 0.0, 2.0, "channel inlet loss coefficient");
   ps.add("muffler_k", muffler_k, "-", 0.0, 50.0, "muffler + tailpipe loss coefficient (pipe head)");
   ps.add("pipe_diameter_m", pipe_diameter_m, "m", 0.03, 0.3, "exhaust pipe diameter");
-  ps.add("ambient_pressure_Pa", ambient_pressure_Pa, "Pa", 5e4, 1.2e5, "tailpipe (ambient) pressure");
 
   ps.setPrefix("lightoff/");
   ps.add("filter_s", lightoff_filter_s, "s", 0.0, 100.0, "low-pass of the NOx flows");

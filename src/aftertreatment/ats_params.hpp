@@ -103,7 +103,6 @@ struct AtsParams {
   /// Step of the model inside the node: the node averages its inputs over this interval
   /// (several macro steps) and advances the model once (the ATS time constants are > 1 s).
   double model_step_s = 0.1;
-  double ambient_pressure_Pa = 101325.0;   ///< tailpipe (ambient) pressure used by the node
 
   void declare(ParamSet& ps);
   /// Cross-checks beyond the per-key ranges; throws InputError naming file and key.

@@ -9,13 +9,14 @@
 //   k(T)  = 0.0241 (T/273.15)^0.81 [W/(m K)] (power-law fit to air, 250-1000 K, +-3 %).
 // Exhaust gas at lambda > 1.3 is ~75 % N2: the air values of mu and k are within a few percent.
 #pragma once
+#include "common/units.hpp"
 #include <algorithm>
 #include <cmath>
 
 namespace hbt::aftertreatment {
 
 constexpr double kRu = 8.314462618;       // J/(mol K)
-constexpr double kAtm_Pa = 101325.0;
+constexpr double kAtm_Pa = units::kStandardAtmosphere_Pa;
 constexpr double kM_NO2 = 0.046006;       // kg/mol (NOx is reported as NO2)
 constexpr double kM_NH3 = 0.017031;
 constexpr double kM_CO = 0.028010;

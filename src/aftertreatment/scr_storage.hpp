@@ -30,6 +30,7 @@
 //   the formation enthalpies of NH3 -45.9, NO 90.3, NO2 33.1, H2O(g) -241.8 kJ/mol).
 // The state vector is allocated once; step() does not allocate.
 #pragma once
+#include "common/units.hpp"
 #include <memory>
 #include <vector>
 
@@ -46,7 +47,7 @@ struct ScrKinetics {
 struct ScrInlet {
   double n_NO_mol_s = 0.0, n_NO2_mol_s = 0.0, n_NH3_mol_s = 0.0;  ///< molar flows
   double n_total_mol_s = 0.0;                                     ///< total gas molar flow
-  double p_Pa = 101325.0;
+  double p_Pa = units::kStandardAtmosphere_Pa;
 };
 
 /// Integrals over one step.

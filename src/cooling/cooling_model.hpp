@@ -46,6 +46,7 @@
 // heat in - heat out - Δstored = 0 to round-off. Lags (wax, clutch, LT pump) use the exact
 // exponential update with the new coolant temperature.
 #pragma once
+#include "common/units.hpp"
 #include <Eigen/Dense>
 
 #include "cooling/cooling_params.hpp"
@@ -58,7 +59,7 @@ struct CoolingInputs {
   double pump_speed_rad_s = 0.0;       // HT pump shaft speed = crank speed (1:1) [rad/s]
   double vehicle_speed_m_s = 0.0;      // for ram air [m/s]
   double ambient_T_K = 298.15;         // [K]
-  double ambient_p_Pa = 101325.0;      // [Pa]
+  double ambient_p_Pa = units::kStandardAtmosphere_Pa;      // [Pa]
   double lt_heat_W = 0.0;              // e-machine + power electronics losses [W] (0 baseline)
   double fan_demand = 0.0;             // [-] extra fan request 0..1 (HVAC)
 };

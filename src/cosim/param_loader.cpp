@@ -85,6 +85,14 @@ double scenarioAmbient_K(const ros::NodeHandle& nh) {
   return units::celsiusToK(ambient_c);
 }
 
+double scenarioAmbientPressure_Pa(const ros::NodeHandle& nh) {
+  double p_Pa = units::kStandardAtmosphere_Pa;
+  nh.param("/scenario/ambient_pressure_pa", p_Pa, p_Pa);
+  if (!(p_Pa >= 5e4 && p_Pa <= 1.2e5))
+    throw InputError("scenario (launch argument pressure)", "ambient_pressure_pa", "must be in [5e4, 1.2e5] Pa");
+  return p_Pa;
+}
+
 std::string resolvePackagePath(const ros::NodeHandle& nh, const std::string& path) {
   if (path.empty() || path[0] == '/') return path;
   std::string pkg;

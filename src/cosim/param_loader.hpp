@@ -29,6 +29,10 @@ void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::s
 /// /scenario/ambient_temperature_c [degC] (default 25) as K; outside (-60, 60) degC: InputError
 /// naming the launch argument.
 double scenarioAmbient_K(const ros::NodeHandle& nh);
+/// /scenario/ambient_pressure_pa [Pa] (launch argument pressure:= in kPa; default the standard
+/// atmosphere): the one ambient pressure of a run (air density, intake, tailpipe, radiator air);
+/// outside [5e4, 1.2e5] Pa: InputError.
+double scenarioAmbientPressure_Pa(const ros::NodeHandle& nh);
 
 std::string resolvePackagePath(const ros::NodeHandle& nh, const std::string& path);
 

@@ -111,7 +111,10 @@ class Participant::Hooks : public core::ParticipantHooks {
     if (p_.cmd_sub_.getNumPublishers() == 0) os << " /sim/step not connected;";
     return os.str();
   }
-  void topicsAnnounced(const std::vector<std::string>& topics) override { p_.topicsAnnounced(topics); }
+  void topicsAnnounced(const std::vector<std::string>& topics,
+                       const std::vector<std::string>& participants) override {
+    p_.topicsAnnounced(topics, participants);
+  }
   void sendStatus(const core::Status& c) override {
     StepStatus s;
     s.header.stamp = fromNanos(c.t);

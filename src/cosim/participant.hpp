@@ -97,7 +97,8 @@ class Participant {
   virtual bool readyToClose(const ros::Time& t_end) const { return true; }
   /// At each SYNC before step 0: every output topic of the run (all participants announced).
   /// An observer may add inputs here (the recorder without a topic list records them all).
-  virtual void topicsAnnounced(const std::vector<std::string>& topics) {}
+  virtual void topicsAnnounced(const std::vector<std::string>& topics,
+                               const std::vector<std::string>& participants) {}
   /// For inputs that are not typed messages (the recorder's raw topics).
   InputBase& addCustomInput(std::unique_ptr<InputBase> in) {
     inputs_.push_back(std::move(in));

@@ -30,10 +30,10 @@ class TypedTopic : public RecordedTopic {
   /// header.seq is roscpp's per-publisher counter, filled in only when a message is serialised
   /// (TCP: mode nodes) and never for an intra-process subscriber (nodelets): written as 0, so
   /// both modes give the same bag.
-  void write(rosbag::Bag& bag, const ros::Time& bag_t, const ros::Time& t) const override {
-    M copy = in_->at(t);
-    copy.header.seq = 0;
-    bag.write(in_->topic(), bag_t, copy);
+  void write(AsyncBagWriter& bag, const ros::Time& bag_t, const ros::Time& t) const override {
+    auto copy = std::make_shared<M>(in_->at(t));
+    copy->header.seq = 0;
+    bag.write(in_->topic(), bag_t, std::shared_ptr<const M>(std::move(copy)));
   }
 
  private:
@@ -79,8 +79,8 @@ class RawTopic : public RecordedTopic {
  public:
   explicit RawTopic(RawInput* in) : in_(in) {}
   InputBase* input() override { return in_; }
-  void write(rosbag::Bag& bag, const ros::Time& bag_t, const ros::Time& t) const override {
-    bag.write(in_->topic(), bag_t, in_->at(t));
+  void write(AsyncBagWriter& bag, const ros::Time& bag_t, const ros::Time& t) const override {
+    bag.write(in_->topic(), bag_t, in_->at(t));  // the received message itself (immutable)
   }
 
  private:

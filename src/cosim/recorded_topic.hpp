@@ -3,16 +3,17 @@
 // intra-process subscriber of the publisher's own type (nodelets) gets the published object
 // itself, never serialised, and the publisher never wakes roscpp's poll thread for it (a
 // type-erased topic_tools::ShapeShifter subscriber forces both at every publish: 8-12 topics at
-// every base step). The message is serialised only when it is written (record_period).
+// every base step). The message is serialised only when it is written (record_period), on the
+// bag writer's thread (bag_writer.hpp).
 // Any other type is recorded type-erased (ShapeShifter): the recorder still records anything.
 #pragma once
-#include <rosbag/bag.h>
 #include <ros/ros.h>
 
 #include <functional>
 #include <memory>
 #include <string>
 
+#include "cosim/bag_writer.hpp"
 #include "cosim/input_buffer.hpp"
 
 namespace hbt::cosim {
@@ -22,8 +23,8 @@ class RecordedTopic {
   virtual ~RecordedTopic() = default;
   /// The lock-step input (owned by the participant base class once handed over).
   virtual InputBase* input() = 0;
-  /// Writes the message held at t with bag time bag_t.
-  virtual void write(rosbag::Bag& bag, const ros::Time& bag_t, const ros::Time& t) const = 0;
+  /// Queues the message held at t for the bag, with bag time bag_t.
+  virtual void write(AsyncBagWriter& bag, const ros::Time& bag_t, const ros::Time& t) const = 0;
   const std::string& topic() { return input()->topic(); }
 };
 

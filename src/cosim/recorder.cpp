@@ -29,9 +29,8 @@ void Recorder::configure() {
   // base step, writing the multiples of the period); reads each topic's held value.
   setObserver(true);
   if (period_ns_ > 0) setMacroStep(period_s, where, "record_period_s", true);
-  bag_ = std::make_unique<rosbag::Bag>();
   try {
-    bag_->open(bag_file, rosbag::bagmode::Write);
+    bag_ = std::make_unique<AsyncBagWriter>(bag_file);
   } catch (const std::exception& e) {
     throw InputError(where, "bag_file", std::string("cannot open '") + bag_file + "': " + e.what());
   }
@@ -39,7 +38,7 @@ void Recorder::configure() {
   std::string diag_file;
   if (pnh_.getParam("diagnostics_bag_file", diag_file) && !diag_file.empty()) {
     std::vector<std::string> from;
-    pnh_.getParam("diagnostics_from", from);
+    diag_from_param_ = pnh_.getParam("diagnostics_from", from);  // else: the run's participants (SYNC)
     for (const auto& n : from)
       if (n != name()) diag_waiting_.insert(n);
     pnh_.param("diagnostics_wait_s", diag_wait_s_, 2.0);
@@ -68,7 +67,13 @@ void Recorder::addTopic(const std::string& topic, const std::string& datatype) {
   std::sort(topics_.begin(), topics_.end(), [](const auto& a, const auto& b) { return a->topic() < b->topic(); });
 }
 
-void Recorder::topicsAnnounced(const std::vector<std::string>& topics) {
+void Recorder::topicsAnnounced(const std::vector<std::string>& topics,
+                               const std::vector<std::string>& participants) {
+  if (diag_bag_ && !diag_from_param_ && !diag_from_table_) {  // wait for every participant's final status
+    for (const auto& n : participants)
+      if (n != name()) diag_waiting_.insert(n);
+    diag_from_table_ = true;
+  }
   if (!record_all_) return;
   std::vector<std::pair<std::string, std::string>> missing;  // topic, resolved name
   for (const auto& t : topics) {
@@ -136,8 +141,8 @@ void Recorder::close(const ros::Time& t_end, bool aborted) {
     bool ready = true;
     for (const auto& r : topics_) ready = ready && r->input()->readyFor(t_end.toNSec());
     if (!aborted && (!wrote_any_ || last_written_ < t_end) && ready) writeAt(t_end);
-    bag_->close();
-    bag_.reset();
+    std::unique_ptr<AsyncBagWriter> bag = std::move(bag_);
+    bag->close();  // drains the queue; a write error throws (the run fails naming the file)
   }
   if (diag_bag_) {
     if (!aborted && !diag_waiting_.empty()) {

@@ -15,11 +15,15 @@
 // (0 = every macro step; otherwise the states stamped at multiples of the period are written,
 // always including t = 0 and the final state).
 //
+// run.bag is written by an AsyncBagWriter (bag_writer.hpp): the lock-step thread only queues a
+// copy of each message held at the record stamp; serialisation and the file run on its thread.
+//
 // Diagnostics (optional, private diagnostics_bag_file [path]): every DiagnosticArray on
 // /diagnostics (cosim/participant.hpp) is written as it arrives to that second bag (bag time =
 // header.stamp), never to bag_file: compute times differ from run to run, run.bag must not. At
 // FINISH the recorder closes only once it holds the final status (key final = true) of every
-// participant named in diagnostics_from [list] -- each carries the warnings of the whole run --
+// participant named in diagnostics_from [list; absent = every participant of the SYNC table] --
+// each carries the warnings of the whole run --
 // or after diagnostics_wait_s [s wall, default 2] (a warning names the missing ones); its own
 // final status it writes itself. At ABORT it closes at once with what it has.
 #pragma once
@@ -47,7 +51,8 @@ class Recorder : public Participant {
   void publishOutputs(const ros::Time& t) override {}
   void step(const ros::Time& t, double dt_s) override;
   bool readyToClose(const ros::Time& t_end) const override;
-  void topicsAnnounced(const std::vector<std::string>& topics) override;
+  void topicsAnnounced(const std::vector<std::string>& topics,
+                       const std::vector<std::string>& participants) override;
   void close(const ros::Time& t_end, bool aborted) override;
 
  private:
@@ -56,10 +61,13 @@ class Recorder : public Participant {
   void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& m);
   void writeDiagnostics(const diagnostic_msgs::DiagnosticArray& m);
   bool diagnosticsComplete() const;
-  std::unique_ptr<rosbag::Bag> bag_, diag_bag_;
+  std::unique_ptr<AsyncBagWriter> bag_;   // run.bag, written on its own thread
+  std::unique_ptr<rosbag::Bag> diag_bag_;
   ros::Subscriber diag_sub_;
   ros::WallTimer diag_timer_;  // re-checks readyToClose while waiting for final statuses
   std::set<std::string> diag_waiting_;  // participants whose final status has not arrived
+  bool diag_from_param_ = false;        // diagnostics_from given; else learnt from the SYNC table
+  bool diag_from_table_ = false;
   double diag_wait_s_ = 2.0;
   mutable double diag_wait_since_ = -1.0;  // wall time [s] the close started waiting (-1: not)
   std::vector<std::unique_ptr<RecordedTopic>> topics_;  // sorted by name; inputs owned by the base

@@ -18,6 +18,8 @@ using hybrid_bus_twin::StepStatus;
 using Clock = std::chrono::steady_clock;
 
 namespace {
+const char* const kParticipantRegistry = "/twin/participants";
+
 std::string jsonEscape(const std::string& s) {
   std::string o;
   for (char c : s) {
@@ -40,7 +42,17 @@ std::string Stepper::readParams(core::StepperConfig& cfg) {
   pnh_.param("timeout_s", cfg.timeout_s, 1.0);
   pnh_.param("startup_timeout_s", cfg.startup_timeout_s, 60.0);
   pnh_.param("clock_period_s", cfg.clock_period_s, 0.1);  // /clock for observers: 10 Hz of sim time
-  pnh_.getParam("participants", cfg.participants);
+  // participants: the private list if given (hand-written test launches), else the registry
+  // /twin/participants/<name> that every participant's launch include writes (one place per
+  // participant: launch/include/participant.launch, core.launch for the recorder)
+  if (!pnh_.getParam("participants", cfg.participants)) {
+    XmlRpc::XmlRpcValue reg;
+    if (nh_.getParam(kParticipantRegistry, reg)) {
+      if (reg.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+        return cfg.where + ": parameter " + kParticipantRegistry + ": expected a map name -> true";
+      for (auto it = reg.begin(); it != reg.end(); ++it) cfg.participants.push_back(it->first);  // sorted by name
+    }
+  }
   const std::string bad_order = cfg.where + ": key 'order': expected a list of groups, each a list of participant names";
   XmlRpc::XmlRpcValue order;
   if (pnh_.getParam("order", order)) {

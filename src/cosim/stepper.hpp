@@ -7,7 +7,9 @@
 // FINISHED), at `until_s`, on an ERROR status, or when a participant does not answer within
 // `timeout_s` (wall clock). The exit status of a run is read from the status file by scripts/twin.
 //
-// Parameters (private): participants [list of names], dt_s [s] (base step), until_s [s] (<= 0:
+// Participants: the private list `participants` if given, else the names registered under
+// /twin/participants/<name> (each participant's launch include registers itself; sorted by name).
+// Parameters (private): participants [list of names, optional], dt_s [s] (base step), until_s [s] (<= 0:
 // mission end), timeout_s [s wall], startup_timeout_s [s wall], status_file [path],
 // progress [bool], order [list of groups, each a list of names (or one name); optional]:
 // Gauss-Seidel groups stepped one after the other within a base step, e.g.

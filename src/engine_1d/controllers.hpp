@@ -16,6 +16,7 @@
 // Injection timing (SOI), pilot and rail pressure come from the cylinder model's maps over speed
 // and load (cylinder/injection/*, latched at inlet-valve closure).
 #pragma once
+#include "common/units.hpp"
 #include "common/pid.hpp"
 #include "common/table2d.hpp"
 #include "cylinder/cylinder_params.hpp"
@@ -30,7 +31,7 @@ struct ControlInputs {
   double motoring = 0;           // T_mot(w) [Nm] (< 0)
   double brake_torque = 0;       // cycle mean [Nm]
   double boost = 0;              // cycle-mean intake manifold pressure [Pa]
-  double ambient_p = 101325.0;   // [Pa]
+  double ambient_p = units::kStandardAtmosphere_Pa;   // [Pa]
   double air_flow = 0;           // cycle-mean air mass flow [kg/s]
   double feedforward_fuel_kg_s = 0;  // F_ref(w, T_req') [kg/s]
   bool fuel_enabled = true;

@@ -31,6 +31,7 @@
 // Indicated torque from the exact work increments of the cylinders (trapezoidal p dV):
 //   T_ind = sum_k dW_k/(omega dt);  friction T_f = sum_k FMEP_k V_d/(4 pi) (Chen-Flynn).
 #pragma once
+#include "common/units.hpp"
 #include <array>
 #include <memory>
 #include <string>
@@ -70,7 +71,7 @@ class EngineAssembly {
   /// [rad/s], ambient p [Pa], T [K]; cylinder k at its phase of the firing order.
   struct Initial {
     double p_im = 1.2e5, T_im = 310.0, p3 = 1.3e5, T3 = 700.0, turbo_rad_s = 4000.0;
-    double p_amb = 101325.0, T_amb = 298.15, fuel_per_cycle_kg = 0.0, coolant_K = 363.15;
+    double p_amb = units::kStandardAtmosphere_Pa, T_amb = 298.15, fuel_per_cycle_kg = 0.0, coolant_K = 363.15;
   };
   /// Flow maps tabulated once per turbocharger (shared between resets).
   struct FlowMaps {

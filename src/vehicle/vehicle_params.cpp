@@ -10,7 +10,6 @@ void VehicleParams::declare(ParamSet& ps) {
   ps.add("curb_mass_kg", c.curb_mass_kg, "kg", 1000.0, 40000.0, "curb mass");
   ps.add("payload_kg", c.payload_kg, "kg", 0.0, 15000.0, "payload (passengers)");
   ps.add("cda_m2", c.cda_m2, "m^2", 1.0, 15.0, "aerodynamic drag area Cd*A");
-  ps.add("ambient_pressure_Pa", c.ambient_pressure_Pa, "Pa", 5e4, 1.2e5, "for the air density");
   ps.add("air_R_J_kgK", c.air_R_J_kgK, "J/(kg K)", 280.0, 295.0, "gas constant of air");
   ps.add("rrc_front", c.rrc_front, "-", 0.001, 0.03, "rolling resistance coefficient axle 1");
   ps.add("rrc_rear", c.rrc_rear, "-", 0.001, 0.03, "rolling resistance coefficient axle 2");

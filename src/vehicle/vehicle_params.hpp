@@ -13,7 +13,7 @@ struct ChassisParams {
   double curb_mass_kg = 15160.0;          // SPEC §2
   double payload_kg = 1500.0;             // scenario parameter, SPEC §2 default
   double cda_m2 = 5.36;                   // drag area Cd·A (VECTO 2015 AT-TC demo city bus)
-  double ambient_pressure_Pa = 101325.0;  // air density ρ = p/(R_air T_ambient)
+  double ambient_pressure_Pa = units::kStandardAtmosphere_Pa;  // air density ρ = p/(R_air T_ambient); the node sets the scenario's
   double air_R_J_kgK = 287.05;
   double rrc_front = 0.0055;              // RRC_ISO axle 1 (P31 XML)
   double rrc_rear = 0.0063;               // RRC_ISO axle 2, twin tyres (P31 XML)

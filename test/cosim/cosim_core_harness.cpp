@@ -11,7 +11,8 @@ FakeParticipant::FakeParticipant(Bus& bus, std::string name, std::vector<std::st
   }
 }
 
-void FakeParticipant::topicsAnnounced(const std::vector<std::string>& topics) {
+void FakeParticipant::topicsAnnounced(const std::vector<std::string>& topics,
+                                      const std::vector<std::string>& /*participants*/) {
   announced_tables.push_back(topics);
   if (!record_all) return;
   for (const auto& topic : topics) {

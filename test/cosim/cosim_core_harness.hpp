@@ -82,7 +82,8 @@ class FakeParticipant : public ParticipantHooks {
   bool readyToClose(Nanos t_end) const override;
   std::string missingLinks() const override { return faults.missing_links; }
   /// record_all (a recorder without a topic list): subscribes to every announced topic.
-  void topicsAnnounced(const std::vector<std::string>& topics) override;
+  void topicsAnnounced(const std::vector<std::string>& topics,
+                       const std::vector<std::string>& participants) override;
   bool record_all = false;
   std::vector<std::vector<std::string>> announced_tables;  // topics of each SYNC seen
   void sendStatus(const Status& s) override;

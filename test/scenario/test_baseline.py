@@ -46,6 +46,10 @@ class Baseline(unittest.TestCase):
             # timeout 10 s: a hang detector; 1 s tripped on this 2-core machine under a load of 10+
             st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL, record_period=0, timeout=10.0)
             cls.runs[name] = (out, st)
+        # the same stretch at 80 kPa (about 2000 m above sea level): launch argument pressure:=
+        cls.p80 = os.path.join(cls.tmp, "p80")
+        cls.p80_status = run_util.run_launch(LAUNCH, cls.p80, until=UNTIL, record_period=0, timeout=10.0,
+                                             pressure=80)
 
     def test_runs_complete(self):
         for name, (out, st) in self.runs.items():
@@ -101,6 +105,28 @@ class Baseline(unittest.TestCase):
         e = by["/engine/state"][max(by["/engine/state"])]
         self.assertGreater(e.friction_correction_nm, 0.0)  # a cold start at 25 degC: cold oil
         self.assertGreater(e.back_pressure_pa, 101325.0)
+
+    def test_one_ambient_pressure(self):
+        """pressure:=80 (kPa) reaches every node that uses the ambient pressure -- the vehicle's
+        air density and its command to the engine, the tailpipe of the aftertreatment -- and
+        nothing else changes it: aerodynamic drag work scales with rho = p/(R T) (the same speed
+        trace within the driver's tracking), the back-pressure sits above 80 kPa, not 101.325."""
+        import rosbag
+        self.assertEqual(self.p80_status["status"], "ok", self.p80_status)
+        ref = os.path.join(self.runs["nodelets"][0], "run.bag")
+        low = os.path.join(self.p80, "run.bag")
+        with rosbag.Bag(low) as b:
+            demands = [m.ambient_pressure_pa for _, m, _ in b.read_messages(topics=["/vehicle/engine_command"])]
+        self.assertGreater(len(demands), 5000)
+        self.assertTrue(all(p == 80000.0 for p in demands))
+        for bag, p_amb in ((ref, 101325.0), (low, 80000.0)):
+            a = last(bag, "/aftertreatment/state")
+            self.assertGreater(a.back_pressure_pa, p_amb)  # exhaust flowing: above ambient
+            self.assertLess(a.back_pressure_pa, p_amb + 10e3)  # idle/low load: a few kPa at most
+        v_ref, v_low = last(ref, "/vehicle/state"), last(low, "/vehicle/state")
+        self.assertGreater(v_ref.aero_loss_j, 1e3)
+        self.assertAlmostEqual(v_low.aero_loss_j / v_ref.aero_loss_j, 80000.0 / 101325.0, delta=0.01)
+        self.assertAlmostEqual(v_low.rolling_loss_j / v_ref.rolling_loss_j, 1.0, delta=0.01)
 
     def test_energy_ledger_in_summary(self):
         """summary.json carries the ledger; it closes to 0.1 % and every key is finite."""

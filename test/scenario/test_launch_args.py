@@ -34,6 +34,8 @@ class LaunchArgs(unittest.TestCase):
         self.rejected("ambient:=500", "outside")
         self.rejected("step:=2", "outside")
         self.rejected("payload:=-1", "outside")
+        self.rejected("pressure:=101325", "outside")  # kPa, not Pa
+        self.rejected("pressure:=20", "outside")
 
     def test_not_a_number(self):
         self.rejected("ambient:=warm", "not a number")

@@ -15,11 +15,10 @@ void AftertreatmentParticipant::configure() {
   params_.declare(ps);
   cosim::applyRosParams(pnh_, ps, configFile());
   params_.validate(configFile());
-  double ambient_c = 25.0;
-  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
-  ambient_T_K_ = units::celsiusToK(ambient_c);
+  ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
+  ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);  // tailpipe pressure
   model_ = std::make_unique<Aftertreatment>(params_);
-  model_->reset(ambient_T_K_, params_.ambient_pressure_Pa);  // cold start at ambient
+  model_->reset(ambient_T_K_, ambient_p_Pa_);  // cold start at ambient
   clearAccumulator();
   exhaust_ = &addInput<hybrid_bus_twin::ExhaustState>("/engine/exhaust");
   vehicle_ = &addInput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
@@ -90,7 +89,7 @@ void AftertreatmentParticipant::step(const ros::Time& t, double dt_s) {
   in.co_mass_flow_kg_s = std::max(0.0, acc_co_ / acc_t_);
   in.vehicle_speed_m_s = std::max(0.0, acc_v_ / acc_t_);
   in.ambient_T_K = acc_Tamb_ / acc_t_;
-  in.ambient_p_Pa = params_.ambient_pressure_Pa;
+  in.ambient_p_Pa = ambient_p_Pa_;
   model_->step(acc_t_, in);
   clearAccumulator();
 }

@@ -8,7 +8,7 @@
 //                        outlet, brick temperatures, tailpipe NOx, NH3 slip, AdBlue, light-off,
 //                        energy and NH3 balances).
 // Parameters: private namespace = config/aftertreatment.yaml (AtsParams::declare);
-// /scenario/ambient_temperature_c.
+// /scenario/ambient_temperature_c, /scenario/ambient_pressure_pa (tailpipe pressure).
 // Initial state: cold start -- every brick (substrate, washcoat, can) at the scenario ambient
 // temperature, the SCR store at scr_kinetics/initial_coverage (0 = empty), back-pressure =
 // ambient pressure.
@@ -26,6 +26,7 @@
 #include <memory>
 
 #include "aftertreatment/aftertreatment.hpp"
+#include "common/units.hpp"
 #include "cosim/participant.hpp"
 
 namespace hbt::aftertreatment {
@@ -49,6 +50,7 @@ class AftertreatmentParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
   ros::Publisher state_pub_;
   double ambient_T_K_ = 298.15;
+  double ambient_p_Pa_ = units::kStandardAtmosphere_Pa;  // tailpipe pressure, /scenario/ambient_pressure_pa
   long cvode_steps_at_status_ = 0;  // SCR solver steps counted at the last status
   cosim::core::Warning* below_light_off_ = nullptr;
   // input accumulator over the macro steps of one model step

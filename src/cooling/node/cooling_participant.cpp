@@ -14,14 +14,8 @@ void CoolingParticipant::configure() {
   ParamSet ps;
   p.declare(ps);
   cosim::applyRosParams(pnh_, ps, configFile());
-  double ambient_c = 25.0;
-  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
-  nh_.param("/scenario/ambient_pressure_pa", ambient_p_Pa_, 101325.0);
-  if (!(ambient_c > -60.0 && ambient_c < 60.0))
-    throw InputError("scenario (launch argument)", "ambient_temperature_c", "must be in (-60, 60) degC");
-  if (!(ambient_p_Pa_ > 2e4 && ambient_p_Pa_ < 2e5))
-    throw InputError("scenario (launch argument)", "ambient_pressure_pa", "must be in (2e4, 2e5) Pa");
-  ambient_T_K_ = units::celsiusToK(ambient_c);
+  ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
+  ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);
   model_ = std::make_unique<CoolingModel>(p, configFile());
   model_->reset(ambient_T_K_);  // cold start: metal, HT and LT coolant at ambient
   last_in_.ambient_T_K = ambient_T_K_;

@@ -8,13 +8,14 @@
 //                        power (> 0 absorbed, < 0 windmilling = returned to the shaft);
 //                        fan_drive_power_w the same at the crank incl. the viscous-clutch slip.
 // Parameters: private namespace = config/cooling.yaml; /scenario/ambient_temperature_c (initial
-// state: everything at ambient, cold start); /scenario/ambient_pressure_pa (default 101325 Pa).
+// state: everything at ambient, cold start); /scenario/ambient_pressure_pa (default the standard atmosphere).
 // Hybrid (private parameter loops/ems): /emachine/state lt_heat_w (e-machine housing +
 // inverter heat into the LT coolant) feeds the LT circuit; baseline: 0 W (the circuit idles).
 // Diagnostics (README "Diagnostics"): warning coolant_overheat (HT coolant above cooling/overheat_c
 // until below cooling/overheat_release_c, for cooling/duration_s, config/diagnostics.yaml);
 // key/values coolant temperatures, thermostat opening, fan engagement and power.
 #pragma once
+#include "common/units.hpp"
 #include <hybrid_bus_twin/EMachineState.h>
 #include <hybrid_bus_twin/EngineHeat.h>
 #include <hybrid_bus_twin/VehicleToCooling.h>
@@ -43,7 +44,7 @@ class CoolingParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
   cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;  // loops/ems (hybrid) only
   ros::Publisher state_pub_;
-  double ambient_T_K_ = 298.15, ambient_p_Pa_ = 101325.0;
+  double ambient_T_K_ = 298.15, ambient_p_Pa_ = units::kStandardAtmosphere_Pa;
   CoolingInputs last_in_;
   bool started_ = false;                                       // a step was taken
   cosim::core::Warning* overheat_ = nullptr;

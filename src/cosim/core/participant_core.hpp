@@ -54,9 +54,10 @@ class ParticipantHooks {
   virtual bool readyToClose(Nanos t_end) const = 0;
   /// Links (inputs without publisher, outputs short of subscribers) not connected; "" = all.
   virtual std::string missingLinks() const = 0;
-  /// At each SYNC, before the link check: every output topic of the run (all participants have
-  /// announced). An observer may add inputs here (the recorder recording everything).
-  virtual void topicsAnnounced(const std::vector<std::string>& topics) {}
+  /// At each SYNC, before the link check: every output topic and every participant of the run
+  /// (all have announced). An observer may add inputs here (the recorder recording everything).
+  virtual void topicsAnnounced(const std::vector<std::string>& topics,
+                               const std::vector<std::string>& participants) {}
   virtual void sendStatus(const Status& s) = 0;
   virtual void logError(const std::string& msg) = 0;
 };

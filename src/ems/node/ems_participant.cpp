@@ -29,9 +29,8 @@ void EmsParticipant::configure() {
   bool supported = true;
   pnh_.param("stop_start_supported", supported, true);
   model_ = std::make_unique<EmsModel>(p, *fuel_, supported);
-  double ambient_c = 25.0;
-  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
-  ambient_T_K_ = units::celsiusToK(ambient_c);
+  ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
+  ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);
 
   demand_ = &addInput<hybrid_bus_twin::DriverDemand>("/vehicle/driver_demand");
   em_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");

@@ -14,6 +14,7 @@
 // Diagnostics (README "Diagnostics"): no warnings of its own (the limits it meets are the
 // e-machine's and the battery's); key/values mode, reason, equivalence factor, stops/starts.
 #pragma once
+#include "common/units.hpp"
 #include <hybrid_bus_twin/AftertreatmentState.h>
 #include <hybrid_bus_twin/BatteryState.h>
 #include <hybrid_bus_twin/CoolingState.h>
@@ -58,7 +59,7 @@ class EmsParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::AftertreatmentState>* ats_ = nullptr;
   ros::Publisher command_pub_, engine_pub_;
   hybrid_bus_twin::DriverDemand last_demand_;
-  double ambient_T_K_ = 298.15, ambient_p_Pa_ = 101325.0;
+  double ambient_T_K_ = 298.15, ambient_p_Pa_ = units::kStandardAtmosphere_Pa;
 };
 
 }  // namespace hbt::ems

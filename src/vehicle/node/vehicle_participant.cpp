@@ -29,9 +29,10 @@ void VehicleParticipant::configure() {
   ParamSet ps;
   p.declare(ps);
   cosim::applyRosParams(pnh_, ps, configFile(), {"mission/", "mission_config_file", "aux_config_file", "em_config_file"});
-  double payload_kg = p.chassis.payload_kg, ambient_c = 25.0;
+  double payload_kg = p.chassis.payload_kg;
   nh_.param("/scenario/payload_kg", payload_kg, payload_kg);
-  nh_.param("/scenario/ambient_temperature_c", ambient_c, 25.0);
+  ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
+  p.chassis.ambient_pressure_Pa = cosim::scenarioAmbientPressure_Pa(nh_);
   if (!(payload_kg >= 0.0 && payload_kg <= 15000.0))
     throw InputError("scenario (launch argument)", "payload", "must be in [0, 15000] kg");
   p.chassis.payload_kg = payload_kg;
@@ -44,7 +45,6 @@ void VehicleParticipant::configure() {
     p.driveline.engine_inertia_kg_m2 += ep.data.crankInertia_kgm2();
   }
   p.validate(configFile());
-  ambient_T_K_ = units::celsiusToK(ambient_c);
   std::string pkg, out_dir, cycle;
   nh_.param<std::string>("/scenario/package_dir", pkg, ".");
   nh_.param<std::string>("/scenario/out_dir", out_dir, "");
