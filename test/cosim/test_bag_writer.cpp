@@ -31,7 +31,8 @@ std::vector<char> bytes(const std::string& file) {
 template <class Sink>
 void writeSequence(Sink&& sink, int n) {
   for (int i = 0; i < n; ++i) {
-    const ros::Time t(0, 1 + 10000000u * static_cast<uint32_t>(i));
+    ros::Time t;
+    t.fromNSec(1 + 10000000ull * static_cast<uint64_t>(i));  // 10 ms records
     std_msgs::Float64 x;
     x.data = 0.5 * i;
     std_msgs::String s;
@@ -66,7 +67,7 @@ TEST(AsyncBagWriter, SameBytesAsInlineWrite) {
   for (const rosbag::MessageInstance& m : rosbag::View(in, rosbag::TopicQuery(std::vector<std::string>{"/a/state"}))) {
     auto x = m.instantiate<std_msgs::Float64>();
     ASSERT_TRUE(x);
-    EXPECT_EQ(x->data, 0.5 * i);
+    ASSERT_EQ(x->data, 0.5 * i);
     ++i;
   }
   EXPECT_EQ(i, n);
