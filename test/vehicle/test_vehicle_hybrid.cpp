@@ -43,8 +43,9 @@ TEST(VehicleHybrid, StoppedEngineSpinsDownAsFrictionAndStaysAtRest) {
     ASSERT_GE(o.engine_speed_rad_s, 0.0);
     ASSERT_EQ(o.gear, 0);
     if (t_stop < 0.0 && o.engine_speed_rad_s < 1.0) t_stop = k * dt;  // friction ramp starts
-    if (k * dt < J * w0 / 100.0 - 0.05)
+    if (k * dt < J * w0 / 100.0 - 0.05) {
       ASSERT_NEAR(o.engine_speed_rad_s, w0 - 100.0 / J * k * dt, 0.02 * w0) << k;  // smoothSign edge
+    }
   }
   EXPECT_NEAR(t_stop, J * (w0 - 1.0) / 100.0, 2.0 * dt);
   // below 1 rad/s the friction fades linearly (smoothSign): the last rad/s decays with J/100 s
