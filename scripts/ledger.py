@@ -28,7 +28,10 @@ import numpy as np
 
 J_PER_KWH = 3.6e6
 LHV_J_KG = 42.7e6
-STANDSTILL_M_S = 0.5 / 3.6  # a stopped bus (same threshold as the stop check of the report)
+# When the bus stands still at a stop: config/mission.yaml stop_service/ (hbt::mission::StopService),
+# taken from the run's resolved configuration (postprocess.stop_service); these defaults only
+# for bags written before the run info carried it.
+STOP_SERVICE_DEFAULT = {"standstill_speed_m_s": 0.5 / 3.6, "served_fraction": 0.9, "window_after_s": 2.0}
 
 # (ledger key, VehicleState field, label) of every driveline sink, in the order of the report.
 DRIVELINE_SINKS = [
@@ -115,11 +118,11 @@ def ledger_closure(L):
     return abs(L["residual"]) / src if src > 0 else 0.0
 
 
-def operating_state(veh, eng):
+def operating_state(veh, eng, standstill_m_s):
     """Per bag sample: index into FUEL_STATES. Standstill -> idle at stop; a gear change in
     progress (drive_mode 3) -> shifting; engine brake torque <= 0 while moving (overrun, fuel
     cut or engine braking) -> coasting/motoring; otherwise traction; engine stopped or being
-    cranked (hybrid stop-start) -> engine_off."""
+    cranked (hybrid stop-start) -> engine_off. standstill_m_s: StopService.standstill_speed_m_s."""
     n = min(len(veh["t"]), len(eng["t"]))
     v = veh["speed_m_s"][:n]
     mode = veh["drive_mode"][:n]
@@ -127,20 +130,20 @@ def operating_state(veh, eng):
     st = np.full(n, FUEL_STATES.index("traction"))
     st[T <= 0.0] = FUEL_STATES.index("coasting_motoring")
     st[mode == 3] = FUEL_STATES.index("shifting")
-    st[v < STANDSTILL_M_S] = FUEL_STATES.index("idle_at_stop")
+    st[v < standstill_m_s] = FUEL_STATES.index("idle_at_stop")
     if "engine_on" in veh:  # hybrid stop-start (and cranking)
         st[veh["engine_on"][:n] == 0] = FUEL_STATES.index("engine_off")
     return st
 
 
-def fuel_by_state(data):
+def fuel_by_state(data, stop_service=STOP_SERVICE_DEFAULT):
     """({state: kg}, {state: s}): the fuel burnt between two bag samples is booked to the state
     at the end of the interval (the state the engine ran in), so the kg add up to the total
     exactly."""
     veh, eng = data.get("/vehicle/state"), data.get("/engine/state")
     if veh is None or eng is None or len(eng["t"]) < 2:
         return None, None
-    st = operating_state(veh, eng)
+    st = operating_state(veh, eng, stop_service["standstill_speed_m_s"])
     n = len(st)
     dm = np.diff(eng["fuel_mass_kg"][:n])
     dt = np.diff(eng["t"][:n])

@@ -85,32 +85,54 @@ def launch_args(pairs):
     return out
 
 
-def stops_served(veh, stops_csv):
+def stop_service(out_dir, run_ok):
+    """config/mission.yaml stop_service/ exactly as the run used it: the vehicle's
+    resolved_config/vehicle.csv (written by the node itself). A missing file or key is an error
+    naming it (a run that ended normally always has it); a failed run without it: None."""
+    import csv
+    path = os.path.join(out_dir, "resolved_config", "vehicle.csv")
+    if not os.path.exists(path):
+        if not run_ok:
+            return None
+        raise SystemExit("twin: %s missing: the stop-service definition of the run is unknown" % path)
+    vals = {}
+    with open(path) as f:
+        for row in csv.reader(line for line in f if not line.startswith("#")):
+            if len(row) >= 3 and row[1].startswith("stop_service/"):
+                vals[row[1].split("/", 1)[1]] = float(row[2])
+    for k in ledger.STOP_SERVICE_DEFAULT:
+        if k not in vals:
+            raise SystemExit("twin: %s: key stop_service/%s missing" % (path, k))
+    return vals
+
+
+def stops_served(veh, stops_csv, sv):
     """Stops of the mission (text of stops.csv, written by the vehicle node from the profile).
-    A stop is served when the bus stands still (< 0.5 km/h) for at least 90 % of the stop time
-    within the profile's window [t_start, t_start + stop time + 2 s]. Returns (served, total,
-    max distance between the standstill position and the stop position [m])."""
+    A stop is served when the bus stands still (speed < sv standstill_speed_m_s) for at least
+    served_fraction of the stop time within the profile's window [t_start, t_start + stop time +
+    window_after_s] (config/mission.yaml stop_service/, the C++ mission runner's definition).
+    Returns (served, total, max distance between the standstill position and the stop position [m])."""
     if not stops_csv:
         return None, None, None
     import io
     stops = np.loadtxt(io.StringIO(stops_csv), delimiter=",", skiprows=1, ndmin=2)
     t, v, s = veh["t"], veh["speed_m_s"], veh["distance_m"]
     dt = np.diff(t, append=t[-1])
-    still = v < 0.5 / 3.6
+    still = v < sv["standstill_speed_m_s"]
     served, total, max_pos_err = 0, 0, 0.0
     for pos, t0, dur in stops:
         if t0 + dur > t[-1]:  # beyond the simulated stretch (until:=)
             continue
         total += 1
-        win = (t >= t0) & (t <= t0 + dur + 2.0) & still
-        if np.sum(dt[win]) >= 0.9 * dur:
+        win = (t >= t0) & (t <= t0 + dur + sv["window_after_s"]) & still
+        if np.sum(dt[win]) >= sv["served_fraction"] * dur - 1e-9:
             served += 1
         if win.any():
             max_pos_err = max(max_pos_err, float(np.max(np.abs(s[win] - pos))))
     return served, total, max_pos_err
 
 
-def summarise(scenario, args, status, data, stops_csv):
+def summarise(scenario, args, status, data, stops_csv, sv=ledger.STOP_SERVICE_DEFAULT):
     veh = data.get("/vehicle/state")
     eng = data.get("/engine/state")
     # defaults as in launch/include/urban.launch (the scenario file sets the architecture)
@@ -141,7 +163,7 @@ def summarise(scenario, args, status, data, stops_csv):
         "aux_kwh": veh["aux_work_j"][-1] / J_PER_KWH,
     })
     s = {k: v for k, v in s.items() if v is not None}
-    served, total, pos_err = stops_served(veh, stops_csv)
+    served, total, pos_err = stops_served(veh, stops_csv, sv)
     if total is not None:
         s["stops_served"], s["stops_total"] = served, total
         s["stop_position_error_max_m"] = pos_err
@@ -149,7 +171,7 @@ def summarise(scenario, args, status, data, stops_csv):
     if L is not None:
         s["energy_kwh"] = L
         s["energy_ledger_closure"] = ledger.ledger_closure(L)
-    fuel, time = ledger.fuel_by_state(data)
+    fuel, time = ledger.fuel_by_state(data, sv)
     if fuel is not None:
         s["fuel_by_state_kg"] = fuel
         s["time_by_state_s"] = time
@@ -257,7 +279,8 @@ def report_from_bag(bag, out, baseline=None):
     info = read_run_info(bag)
     status = info["status"]
     data = read_bag(bag)
-    s = summarise(info["scenario"], info["args"], status, data, info.get("stops_csv", ""))
+    s = summarise(info["scenario"], info["args"], status, data, info.get("stops_csv", ""),
+                  info.get("stop_service") or ledger.STOP_SERVICE_DEFAULT)
     nodes = diagnostics.read_diagnostics(bag)
     warnings = diagnostics.warnings_list(nodes) if nodes is not None else None
     if warnings is not None:
@@ -300,7 +323,8 @@ def main():
         return 1
     stops = os.path.join(a.out, "stops.csv")
     info = {"scenario": a.scenario, "args": launch_args(a.args), "status": status,
-            "stops_csv": open(stops).read() if os.path.exists(stops) else ""}
+            "stops_csv": open(stops).read() if os.path.exists(stops) else "",
+            "stop_service": stop_service(a.out, status["status"] == "ok")}
     store_run_info(bag, info)
     status, s = report_from_bag(bag, a.out)
     if status["status"] != "ok":

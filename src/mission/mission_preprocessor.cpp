@@ -29,6 +29,12 @@ void MissionParams::declare(ParamSet& ps) {
          "overspeed disabled below this target speed");
   ps.add("driver/overspeed_m_s", driver.overspeed_m_s, "m/s", 0.0, 10.0,
          "allowed speed above the target while rolling downhill");
+  ps.add("stop_service/standstill_speed_m_s", stop_service.standstill_speed_m_s, "m/s", 0.0, 2.0,
+         "a bus slower than this stands still (stop service, idle-at-stop fuel)");
+  ps.add("stop_service/served_fraction", stop_service.served_fraction, "-", 0.1, 1.0,
+         "share of a stop's duration the bus must stand still for the stop to be served");
+  ps.add("stop_service/window_after_s", stop_service.window_after_s, "s", 0.0, 60.0,
+         "the stop's window extends this long past its end (late arrival)");
 }
 
 MissionProfile buildMissionProfile(const DrivingCycle& cycle, const AccelerationLimits& limits,

@@ -6,7 +6,8 @@
 // each step gets the target speed / acceleration for t + dt.
 //
 // Stop service criterion (per stop of the profile, a run of stop_flag = 1 starting at t_0 and
-// lasting D): the bus stands (v = 0) for >= served_fraction · D within [t_0, t_0 + D + 2 s].
+// lasting D): mission::StopService (config/mission.yaml stop_service/: the bus below
+// standstill_speed_m_s for >= served_fraction · D within [t_0, t_0 + D + window_after_s]).
 // Position error of a stop: bus distance while standing in that window (first standstill
 // instant) minus the profile's stop position (if it never stands: the distance at t_0 + D).
 // Used by the vehicle_mission tool and the full-mission test.
@@ -24,7 +25,7 @@ namespace hbt::vehicle {
 
 struct MissionStopResult {
   double t_start_s = 0.0, duration_s = 0.0, position_m = 0.0;  // from the profile
-  double standing_s = 0.0;       // bus at v = 0 within [t_start, t_start + duration + 2 s]
+  double standing_s = 0.0;       // bus standing still within the stop's window
   double position_error_m = 0.0; // bus distance at the stop - profile stop position
   bool served = false;
 };
@@ -38,14 +39,12 @@ struct MissionRunResult {
   double fuel_kg = 0.0, engine_positive_work_J = 0.0, engine_brake_work_J = 0.0;
   double wall_time_s = 0.0;
   VehicleEnergy energy;     // vehicle's cumulative energies at the end
-  double idle_standing_s = 0.0;  // total time at v = 0
+  double idle_standing_s = 0.0;  // total time standing still (StopService::standstill_speed_m_s)
 };
 
 struct MissionRunOptions {
   double dt_s = 0.01;
   double ambient_T_K = 298.15;
-  double served_fraction = 0.9;
-  double stop_window_extra_s = 2.0;
   double t_end_s = -1.0;  // < 0: whole profile
   /// Optional observer after every step: (t, vehicle outputs, engine outputs, target speed).
   std::function<void(double, const VehicleOutputs&, const engine_map::MapEngineOutputs&, double)>
@@ -63,6 +62,7 @@ inline MissionRunResult runMission(const VehicleParams& vp, const engine_map::Ma
   mp.vehicle.cda_m2 = vp.chassis.cda_m2;
   mp.vehicle.rrc = vm.roadLoad().rollingCoefficient();
   const mission::MissionProfile prof = mission::buildMissionProfile(mp);
+  const mission::StopService& sv = mp.stop_service;
   const auto& cyc = prof.cycle();
   std::vector<double> grade(cyc.grade_percent.size());
   for (std::size_t i = 0; i < grade.size(); ++i) grade[i] = cyc.grade_percent[i] / 100.0;
@@ -98,21 +98,22 @@ inline MissionRunResult runMission(const VehicleParams& vp, const engine_map::Ma
     const double e = o.speed_m_s - prof.speedAt(t1);
     se2 += e * e;
     res.max_speed_error_m_s = std::max(res.max_speed_error_m_s, std::fabs(e));
-    if (o.speed_m_s == 0.0) res.idle_standing_s += opt.dt_s;
+    const bool still = o.speed_m_s < sv.standstill_speed_m_s;
+    if (still) res.idle_standing_s += opt.dt_s;
     // Stop windows (non-overlapping in time in practice; check every window that holds t1).
     while (k_stop < res.stops.size() &&
-           t1 > res.stops[k_stop].t_start_s + res.stops[k_stop].duration_s + opt.stop_window_extra_s)
+           t1 > res.stops[k_stop].t_start_s + res.stops[k_stop].duration_s + sv.window_after_s)
       ++k_stop;
     for (std::size_t q = k_stop; q < res.stops.size() && res.stops[q].t_start_s < t1; ++q) {
       MissionStopResult& st = res.stops[q];
-      const double w_end = st.t_start_s + st.duration_s + opt.stop_window_extra_s;
+      const double w_end = st.t_start_s + st.duration_s + sv.window_after_s;
       if (t1 > w_end + 1e-9) continue;
-      if (o.speed_m_s == 0.0) {
+      if (still) {
         st.standing_s += std::min(opt.dt_s, t1 - st.t_start_s);
         if (std::isnan(st.position_error_m)) st.position_error_m = o.distance_m - st.position_m;
       }
       if (std::fabs(t1 - (st.t_start_s + st.duration_s)) < 0.5 * opt.dt_s &&
-          std::isnan(st.position_error_m) && o.speed_m_s != 0.0) {
+          std::isnan(st.position_error_m) && !still) {
         st.position_error_m = o.distance_m - st.position_m;  // not standing at the stop's end
       }
     }
@@ -123,7 +124,7 @@ inline MissionRunResult runMission(const VehicleParams& vp, const engine_map::Ma
   res.target_distance_m = prof.distanceAt(res.duration_s) - prof.distanceAt(0.0);
   for (auto& st : res.stops) {
     if (st.t_start_s + st.duration_s > res.duration_s) continue;
-    st.served = st.standing_s >= opt.served_fraction * st.duration_s - 1e-9;
+    st.served = st.standing_s >= sv.served_fraction * st.duration_s - 1e-9;
     if (st.served) ++res.stops_served;
     if (!std::isnan(st.position_error_m))
       res.max_stop_position_error_m = std::max(res.max_stop_position_error_m, std::fabs(st.position_error_m));
