@@ -109,7 +109,7 @@ std::string gearLossSetFile(const std::string& config_dir, const std::string& na
   if (!word || std::find(sets.begin(), sets.end(), name) == sets.end()) {
     std::string avail;
     for (const auto& s : sets) avail += (avail.empty() ? "" : ", ") + s;
-    throw InputError("launch argument", "gearbox", "unknown gear loss set '" + name + "' (no " + dir +
+    throw InputError(dir, "gearbox", "unknown gear loss set '" + name + "' (no " + dir +
                                                        "/" + name + ".yaml); available: " + avail);
   }
   return dir + "/" + name + ".yaml";
