@@ -65,6 +65,7 @@ ARGS = {
     "record_period": number(0.0, 3600.0),    # [s]
     "rviz": choice("true", "false"),
     "aux": existing("file", "{config}/aux", ".yaml"),
+    "gearbox": existing("file", "{config}/gearbox", ".yaml"),  # gear loss set
     "cycle": existing("file", "config/data/cycles/vecto", ".vdri"),
     "cycle_file": existing("file"),
     "config": existing("dir"),
@@ -135,10 +136,10 @@ def check_remote(scenario, given):
 
 
 def check_yaml_files(folder):
-    """Every YAML of the config folder (and its aux/ sets) parses and is not empty, before
+    """Every YAML of the config folder (and its aux/ and gearbox/ sets) parses and is not empty, before
     roslaunch reads them (its errors name no file; an empty file loads nothing, silently)."""
     import yaml
-    for sub in ("", "aux"):
+    for sub in ("", "aux", "gearbox"):
         d = os.path.join(folder, sub)
         if not os.path.isdir(d):
             continue
@@ -161,7 +162,7 @@ def main():
     repo, scenario, pairs = sys.argv[1], sys.argv[2], sys.argv[3:]
     out, seen, given = [], set(), {}
     config = None
-    for p in pairs:  # the config folder first: the auxiliary sets live in it
+    for p in pairs:  # the config folder first: the auxiliary and gear loss sets live in it
         if p.startswith("config:="):
             config = os.path.abspath(p[len("config:="):])
     for p in pairs:

@@ -143,6 +143,7 @@ def summarise(scenario, args, status, data, stops_csv, sv=ledger.STOP_SERVICE_DE
         "engine_model": args.get("engine", "map"),
         "ambient_c": float(args.get("ambient", 25.0)),
         "aux_set": args.get("aux") or ("vecto_p1_example_48v" if arch == "p1_48v" else "vecto_p1_example"),
+        "gearbox_set": args.get("gearbox") or "typical",  # gear loss set, config/gearbox/<set>.yaml
         "macro_step_s": status["macro_step_s"],
         "sim_time_s": status["sim_time_s"],
         "wall_time_s": status["wall_time_s"],

@@ -41,7 +41,7 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
     r.T_drag = gl_.drag(w) * smoothSign(w);
   }
   if (gs_.mode != DriveMode::Neutral) {
-    r.T_gload = p_.driveline.gear_load_loss_factor[g - 1] * gl_.load(w_in, T_in_est_) * smoothSign(w_in);
+    r.T_gload = p_.gearbox.gear_load_loss_factor[g - 1] * gl_.load(w_in, T_in_est_) * smoothSign(w_in);
     r.T_axl = (1.0 - p_.driveline.axle_efficiency) * std::fabs(T_ax_est_) * smoothSign(w_out);
   }
   r.T_ret = ret_.torque(w_out) * smoothSign(w_out);

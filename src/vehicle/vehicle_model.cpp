@@ -22,7 +22,7 @@ VehicleModel::VehicleModel(const VehicleParams& p, const std::string& base_dir) 
   const auto& c = p_.chassis;
   road_ = RoadLoad(c);
   tc_ = TorqueConverter(resolve(base_dir, d.torque_converter_file), d.tc_reference_speed_rad_s);
-  gl_ = GearLossMap(resolve(base_dir, d.gear_loss_map_file));
+  gl_ = GearLossMap(resolve(base_dir, p_.gearbox.gear_loss_map_file));
   ret_ = RetarderLoss(resolve(base_dir, d.retarder_loss_file));
   shift_ = ShiftStrategy(p_.shift, d.gear_ratios, d.idle_speed_rad_s);
   const double m = p_.totalMass_kg();

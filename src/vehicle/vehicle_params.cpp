@@ -1,5 +1,9 @@
 #include "vehicle/vehicle_params.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
 #include "common/errors.hpp"
 
 namespace hbt::vehicle {
@@ -25,10 +29,8 @@ void VehicleParams::declare(ParamSet& ps) {
   ps.setPrefix("driveline/");
   ps.add("gear_ratios", d.gear_ratios, "-", 0.3, 10.0, "gearbox ratios, gear 1 first");
   ps.add("gear_max_input_torque_Nm", d.gear_max_input_torque_Nm, "Nm", 0.0, 1e4, "0 = no limit");
-  ps.add("gear_load_loss_factor", d.gear_load_loss_factor, "-", 0.0, 3.0, "x load-dependent loss");
   ps.add("axle_ratio", d.axle_ratio, "-", 1.0, 20.0, "final drive ratio");
   ps.add("axle_efficiency", d.axle_efficiency, "-", 0.5, 1.0, "axle efficiency");
-  ps.add("gear_loss_map_file", d.gear_loss_map_file, "VECTO gearbox torque-loss map");
   ps.add("torque_converter_file", d.torque_converter_file, "VECTO .vtcc characteristic");
   ps.add("retarder_loss_file", d.retarder_loss_file, "retarder drag table ('' = none)");
   ps.add("tc_reference_speed_rad_s", d.tc_reference_speed_rad_s, "rad/s", 10.0, 1000.0, "MP reference speed");
@@ -71,6 +73,9 @@ void VehicleParams::declare(ParamSet& ps) {
   ps.setPrefix("aux/");
   aux.declare(ps);
 
+  ps.setPrefix("gearbox/");
+  gearbox.declare(ps);
+
   ps.setPrefix("numerics/");
   ps.add("max_substep_s", numerics.max_substep_s, "s", 1e-5, 0.01, "internal integration step");
   ps.setPrefix("");
@@ -85,6 +90,30 @@ void AuxParams::declare(ParamSet& ps) {
   ps.add("dcdc_efficiency", dcdc_efficiency, "-", 0.5, 1.0, "48 V -> 24 V DC/DC efficiency");
 }
 
+void GearLossSetParams::declare(ParamSet& ps) {
+  ps.add("gear_loss_map_file", gear_loss_map_file, "VECTO gearbox torque-loss map (input speed, input torque, loss)");
+  ps.add("gear_load_loss_factor", gear_load_loss_factor, "-", 0.0, 3.0, "x load-dependent part of the map, per gear");
+}
+
+std::string gearLossSetFile(const std::string& config_dir, const std::string& name) {
+  const std::string dir = config_dir + "/gearbox";
+  std::vector<std::string> sets;
+  if (std::filesystem::is_directory(dir))
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+      if (e.path().extension() == ".yaml") sets.push_back(e.path().stem().string());
+  std::sort(sets.begin(), sets.end());
+  const bool word = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+  if (!word || std::find(sets.begin(), sets.end(), name) == sets.end()) {
+    std::string avail;
+    for (const auto& s : sets) avail += (avail.empty() ? "" : ", ") + s;
+    throw InputError(dir, "gearbox", "unknown gear loss set '" + name + "' (no " + dir +
+                                                       "/" + name + ".yaml); available: " + avail);
+  }
+  return dir + "/" + name + ".yaml";
+}
+
 void VehicleParams::validate(const std::string& file) const {
   const auto& d = driveline;
   const std::size_t n = d.gear_ratios.size();
@@ -94,8 +123,8 @@ void VehicleParams::validate(const std::string& file) const {
       throw InputError(file, "driveline/gear_ratios", "ratios must decrease from gear 1");
   if (d.gear_max_input_torque_Nm.size() != n)
     throw InputError(file, "driveline/gear_max_input_torque_Nm", "one value per gear");
-  if (d.gear_load_loss_factor.size() != n)
-    throw InputError(file, "driveline/gear_load_loss_factor", "one value per gear");
+  if (gearbox.gear_load_loss_factor.size() != n)
+    throw InputError(file, "gearbox/gear_load_loss_factor", "one value per gear (driveline/gear_ratios)");
   const auto& s = shift;
   if (!(s.upshift_speed_high_rad_s >= s.upshift_speed_low_rad_s))
     throw InputError(file, "shift/upshift_speed_high_rad_s", "must be >= upshift_speed_low_rad_s");

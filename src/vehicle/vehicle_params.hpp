@@ -29,11 +29,8 @@ struct ChassisParams {
 struct DrivelineParams {
   std::vector<double> gear_ratios{3.364, 1.909, 1.421, 1.000, 0.720, 0.615};  // APT-S
   std::vector<double> gear_max_input_torque_Nm{1900.0, 1900.0, 0.0, 0.0, 0.0, 0.0};  // 0 = none
-  std::vector<double> gear_load_loss_factor{1.0, 1.0, 1.0, 0.0, 1.0, 1.0};  // × load part of map
   double axle_ratio = 6.5;                // P31 XML single portal axle
   double axle_efficiency = 0.95;          // VECTO AT-TC demo city bus
-  std::string gear_loss_map_file =
-      "config/data/vehicle/generic_primary_bus_P31/gear_loss_map_gears2_3_5_6.csv";
   std::string torque_converter_file =
       "config/data/vehicle/generic_primary_bus_P31/torque_converter_APT-S_standard_values.vtcc";
   std::string retarder_loss_file =
@@ -45,6 +42,22 @@ struct DrivelineParams {
   double idle_speed_rad_s = units::rpmToRadps(700.0);  // P31 XML idling speed
   double neutral_drag_torque_Nm = 12.0;   // AT spin loss in neutral at the pump (estimate)
 };
+
+/// Gear loss set (config/gearbox/<set>.yaml, group `gearbox:`, launch argument gearbox:=<set>):
+/// the gearbox torque-loss map and the per-gear factor on its load part. Defaults = "typical".
+struct GearLossSetParams {
+  std::string gear_loss_map_file =  // VECTO generic-bus AT: eta = 0.925 in every gear
+      "config/data/vehicle/gearbox_typical/gear_loss_map_generic_bus_AT_eta0925.csv";
+  std::vector<double> gear_load_loss_factor{1.0, 1.0, 1.0, 1.0, 1.0, 1.0};  // × load part of map
+  /// Registers the keys (without prefix) = the `gearbox:` group of a gear loss set.
+  void declare(ParamSet& ps);
+};
+
+/// The gear loss sets shipped in config/gearbox/ (launch argument gearbox:=<set>).
+/// Path of set `name` under `config_dir` (config/gearbox/<name>.yaml); InputError naming the
+/// launch argument "gearbox" and the available sets when the name is not a plain word or no
+/// such file exists.
+std::string gearLossSetFile(const std::string& config_dir, const std::string& name);
 
 struct ShiftParams {
   double upshift_speed_low_rad_s = units::rpmToRadps(1200.0);    // at accelerator 0
@@ -98,13 +111,15 @@ struct NumericsParams {
 struct VehicleParams {
   ChassisParams chassis;
   DrivelineParams driveline;
+  GearLossSetParams gearbox;  // group gearbox/ (a separate file, config/gearbox/<set>.yaml)
   ShiftParams shift;
   DriverParams driver;
   AuxParams aux;
   NumericsParams numerics;
   double totalMass_kg() const { return chassis.curb_mass_kg + chassis.payload_kg; }
   /// Registers every parameter as "<group>/<key>" (groups chassis, driveline, shift, driver,
-  /// aux, numerics) = config/vehicle.yaml.
+  /// numerics = config/vehicle.yaml; aux = config/aux/<set>.yaml; gearbox =
+  /// config/gearbox/<set>.yaml).
   void declare(ParamSet& ps);
   /// Cross-field checks (vector lengths, ordering of shift lines). Throws InputError(file, key).
   void validate(const std::string& file = "(vehicle parameters)") const;

@@ -138,6 +138,9 @@ class Baseline(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(os.path.join(out, "summary.json")) as f:
             s = json.load(f)
+        self.assertEqual(s["gearbox_set"], "typical")  # the default gear loss set, stated like aux_set
+        with open(os.path.join(out, "resolved_config", "vehicle.csv")) as f:  # and it reached the bus
+            self.assertIn("config/gearbox/typical.yaml,gearbox/gear_loss_map_file,", f.read())
         L = s["energy_kwh"]
         for k, v in L.items():
             self.assertTrue(math.isfinite(v), k)

@@ -50,6 +50,7 @@ class LaunchArgs(unittest.TestCase):
 
     def test_missing_files(self):
         self.rejected("aux:=foo", "fan_only", "vecto_p1_example")
+        self.rejected("gearbox:=measured", "argument 'gearbox'", "typical", "vecto_standard")
         self.rejected("cycle:=Nowhere", "Urban")
         self.rejected("cycle_file:=/nonexistent.vdri", "not found")
         self.rejected("config:=/nonexistent_dir", "not found")
@@ -111,7 +112,7 @@ class LaunchArgs(unittest.TestCase):
 
     def test_valid_arguments_pass_unchanged(self):
         args = ["ambient:=0", "engine:=1d", "solver:=tvd", "mode:=nodelets", "aux:=fan_only",
-                "cycle:=Urban", "rviz:=false"]
+                "gearbox:=vecto_standard", "cycle:=Urban", "rviz:=false"]
         rc, out, _ = check(*args)
         self.assertEqual(rc, 0)
         self.assertEqual(out, ["ambient:=0.0"] + args[1:])

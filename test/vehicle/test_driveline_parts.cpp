@@ -89,6 +89,80 @@ TEST(GearLossMap, GridValuesBilinearAndChecks) {
   EXPECT_EQ(RetarderLoss("").torque(100.0), 0.0);
 }
 
+namespace {
+GearLossSetParams loadGearLossSet(const std::string& name) {
+  GearLossSetParams g;
+  ParamSet ps;
+  ps.setPrefix("gearbox/");
+  g.declare(ps);
+  applyParams(ps, readYamlParams(gearLossSetFile("config", name)));
+  return g;
+}
+// Loss at the gearbox input of gear g (1-based) as VehicleModel applies it: drag + f_g x load.
+double setLoss(const GearLossMap& m, const GearLossSetParams& g, int gear, double n_rpm, double T_Nm) {
+  const double w = rpmToRadps(n_rpm);
+  return m.drag(w) + g.gear_load_loss_factor[gear - 1] * m.load(w, T_Nm);
+}
+}  // namespace
+
+// Set "typical" (the default): VECTO's generic-bus AT efficiency 0.925 in every gear, no
+// separate drag: eta = 1 - L/T_in = 0.925 at any speed, torque and gear.
+TEST(GearLossSet, TypicalReproducesVectoGenericBusAtEfficiency) {
+  const GearLossSetParams g = loadGearLossSet("typical");
+  const GearLossSetParams def;  // the C++ defaults are the typical set
+  EXPECT_EQ(g.gear_loss_map_file, def.gear_loss_map_file);
+  EXPECT_EQ(g.gear_load_loss_factor, def.gear_load_loss_factor);
+  const GearLossMap m(g.gear_loss_map_file);
+  for (int gear = 1; gear <= 6; ++gear)
+    for (double n : {700.0, 1000.0, 1400.0, 2200.0})
+      for (double T : {150.0, 500.0, 1250.0, 1900.0, 3500.0}) {
+        EXPECT_NEAR(1.0 - setLoss(m, g, gear, n, T) / T, 0.925, 1e-12) << gear << " " << n << " " << T;
+        EXPECT_NEAR(setLoss(m, g, gear, n, -T), 0.075 * T, 1e-9);  // motoring: same loss
+      }
+  EXPECT_EQ(m.drag(rpmToRadps(1400.0)), 0.0);
+}
+
+// Set "vecto_standard": EU 2017/2400 Annex VI Appendix 8 for > 2 friction shift clutches,
+// T_l,in = T_d0 + T_d1000 n/1000 + f_T T_in, T_d0 = T_d1000 = 0.015 T_max,in (2000 Nm) = 30 Nm,
+// f_T = 0.04 indirect, 0.01 in the direct gear 4 — on and between the grid points.
+TEST(GearLossSet, VectoStandardReproducesRegulationFormula) {
+  const GearLossSetParams g = loadGearLossSet("vecto_standard");
+  const GearLossMap m(g.gear_loss_map_file);
+  const double Td = 0.015 * 2000.0;
+  for (int gear = 1; gear <= 6; ++gear) {
+    const double fT = gear == 4 ? 0.01 : 0.04;
+    for (double n : {600.0, 900.0, 1400.0, 2000.0, 2250.0})
+      for (double T : {0.0, 200.0, 500.0, 1000.0, 1900.0}) {
+        const double formula = Td + Td * n / 1000.0 + fT * T;
+        EXPECT_NEAR(setLoss(m, g, gear, n, T), formula, 1e-9) << gear << " " << n << " " << T;
+      }
+  }
+  // The worked point of config/gearbox/*.yaml: 1400 rpm, 500 Nm in 3rd: 92 Nm (eta 0.816).
+  EXPECT_NEAR(setLoss(m, g, 3, 1400.0, 500.0), 92.0, 1e-9);
+}
+
+TEST(GearLossSet, UnknownSetNameRejectedNamingTheArgument) {
+  for (const std::string bad : {"measured", "", "../vehicle", "typical.yaml"}) {
+    try {
+      gearLossSetFile("config", bad);
+      FAIL() << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key(), "gearbox");
+      EXPECT_NE(std::string(e.what()).find("typical, vecto_standard"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(gearLossSetFile("config", "typical"), "config/gearbox/typical.yaml");
+  // A set whose factors do not match the gear count is rejected before the run.
+  VehicleParams p;
+  p.gearbox.gear_load_loss_factor = {1.0, 1.0};
+  try {
+    p.validate("config/gearbox/x.yaml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "gearbox/gear_load_loss_factor");
+  }
+}
+
 TEST(RoadLoad, VectoRollingResistanceWeighting) {
   ChassisParams c;
   const RoadLoad r(c);
@@ -182,6 +256,7 @@ TEST(VehicleParams, YamlMatchesDeclarationAndBadValuesRejected) {
   p.declare(ps);
   ParamSource src = readYamlParams("config/vehicle.yaml");
   for (const auto& kv : readYamlParams("config/aux/vecto_p1_example.yaml").values) src.values.insert(kv);
+  for (const auto& kv : readYamlParams("config/gearbox/typical.yaml").values) src.values.insert(kv);
   EXPECT_NO_THROW(applyParams(ps, src));
   for (const auto& e : ps.entries()) EXPECT_TRUE(src.values.count(e.key)) << "missing in YAML: " << e.key;
   EXPECT_NO_THROW(p.validate("config/vehicle.yaml"));

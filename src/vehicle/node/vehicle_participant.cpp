@@ -26,9 +26,17 @@ void VehicleParticipant::configure() {
     p.aux.declare(aps);
     applyParams(aps, readYamlParams(aux_file));
   }
+  std::string gearbox_file;
+  if (pnh_.getParam("gearbox_config_file", gearbox_file)) {  // the gear loss set, likewise
+    ParamSet gps;
+    gps.setPrefix("gearbox/");
+    p.gearbox.declare(gps);
+    applyParams(gps, readYamlParams(gearbox_file));
+  }
   ParamSet ps;
   p.declare(ps);
-  cosim::applyRosParams(pnh_, ps, configFile(), {"mission/", "mission_config_file", "aux_config_file", "em_config_file"});
+  cosim::applyRosParams(pnh_, ps, configFile(),
+                        {"mission/", "mission_config_file", "aux_config_file", "gearbox_config_file", "em_config_file"});
   double payload_kg = p.chassis.payload_kg;
   nh_.param("/scenario/payload_kg", payload_kg, payload_kg);
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);

@@ -6,6 +6,7 @@
 //
 //   vehicle_mission [--dt 0.01] [--ambient_C 25] [--payload 1500] [--cycle <vdri>]
 //                   [--t_end <s>] [--base <package root>] [--stops 1] [--trace <csv, 10 Hz>]
+//                   [--gearbox typical|vecto_standard]  (gear loss set config/gearbox/<set>.yaml)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/params.hpp"
+#include "common/yaml_params.hpp"
 #include "vehicle/tools/mission_run.hpp"
 
 using namespace hbt;
@@ -22,7 +25,7 @@ int main(int argc, char** argv) {
   vehicle::MissionRunOptions opt;
   double payload = 1500.0, ambient_C = 25.0;
   bool list_stops = false;
-  std::string base, cycle, trace;
+  std::string base, cycle, trace, gearbox = "typical";
   if (const char* env = std::getenv("HBT_SOURCE_DIR")) base = env;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--dt")) opt.dt_s = std::atof(argv[i + 1]);
@@ -33,6 +36,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--base")) base = argv[i + 1];
     else if (!std::strcmp(argv[i], "--stops")) list_stops = std::atoi(argv[i + 1]) != 0;
     else if (!std::strcmp(argv[i], "--trace")) trace = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--gearbox")) gearbox = argv[i + 1];
     else { std::fprintf(stderr, "unknown option %s\n", argv[i]); return 2; }
   }
   auto rel = [&](const std::string& f) {
@@ -42,6 +46,12 @@ int main(int argc, char** argv) {
     opt.ambient_T_K = ambient_C + 273.15;
     vehicle::VehicleParams vp;
     vp.chassis.payload_kg = payload;
+    {  // gear loss set config/gearbox/<set>.yaml, as the launch argument gearbox:=<set>
+      ParamSet gps;
+      gps.setPrefix("gearbox/");
+      vp.gearbox.declare(gps);
+      applyParams(gps, readYamlParams(vehicle::gearLossSetFile(rel("config"), gearbox)));
+    }
     mission::MissionParams mp;
     if (!cycle.empty()) mp.cycle_file = cycle;
     mp.cycle_file = rel(mp.cycle_file);
