@@ -128,6 +128,40 @@ class Baseline(unittest.TestCase):
         self.assertAlmostEqual(v_low.aero_loss_j / v_ref.aero_loss_j, 80000.0 / 101325.0, delta=0.01)
         self.assertAlmostEqual(v_low.rolling_loss_j / v_ref.rolling_loss_j, 1.0, delta=0.01)
 
+    def test_stop_service_from_the_run_config(self):
+        """The report counts served stops and idle-at-stop fuel with the run's own definition
+        (config/mission.yaml stop_service/, as resolved_config/vehicle.csv records it): with a
+        standstill speed of 0 nothing ever stands, so no stop is served and no fuel is idle at a
+        stop; without the key the report stops naming file and key."""
+        def report(edit):
+            out = tempfile.mkdtemp(prefix="stop_service_", dir=self.tmp)
+            shutil.rmtree(out)
+            shutil.copytree(self.runs["nodes"][0], out)
+            path = os.path.join(out, "resolved_config", "vehicle.csv")
+            with open(path) as f:
+                lines = [edit(line) for line in f]
+            with open(path, "w") as f:
+                f.writelines(line for line in lines if line is not None)
+            r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"), out,
+                                "--scenario", "baseline_urban"], capture_output=True, text=True)
+            s = json.load(open(os.path.join(out, "summary.json"))) if r.returncode == 0 else None
+            return r, s
+
+        r, s = report(lambda line: line)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertGreaterEqual(s["stops_total"], 1)
+        self.assertEqual(s["stops_served"], s["stops_total"])
+        self.assertGreater(s["fuel_by_state_kg"]["idle_at_stop"], 0.0)
+        r, s = report(lambda line: line.replace(",stop_service/standstill_speed_m_s,0.1388888888888889,",
+                                                ",stop_service/standstill_speed_m_s,0,"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(s["stops_served"], 0)
+        self.assertEqual(s["fuel_by_state_kg"]["idle_at_stop"], 0.0)
+        r, _ = report(lambda line: None if "stop_service/served_fraction" in line else line)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("stop_service/served_fraction", r.stderr)
+        self.assertIn("vehicle.csv", r.stderr)
+
     def test_energy_ledger_in_summary(self):
         """summary.json carries the ledger; it closes to 0.1 % and every key is finite."""
         import math
