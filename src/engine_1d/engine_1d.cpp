@@ -25,7 +25,12 @@ void check(double v, const char* name) {
 Engine1D::Engine1D(const Engine1DParams& p, const std::string& root) : P_(p) {
   P_.validate();
   tc_ = std::make_unique<turbo::Turbocharger>(turbo::buildTurbocharger(P_.turbo, root));
-  ref_ = std::make_unique<engine_map::MapEngine>(P_.reference, root);
+  // The reference map engine serves as the bench map (limits, feed-forward fuel, validation);
+  // its NOx map is derived FROM this engine (src/engine_1d/tools/make_nox_map.py), so it is not
+  // loaded here: the 1D engine runs (and regenerates the map) without it.
+  engine_map::MapEngineParams ref_params = P_.reference;
+  ref_params.nox_map_file.clear();
+  ref_ = std::make_unique<engine_map::MapEngine>(ref_params, root);
   maps_ = EngineAssembly::FlowMaps::build(*tc_);
   cyl::Cylinder probe(P_.cylinder, "probe");
   ctl_ = std::make_unique<EngineControllers>(P_.engine, probe.thermo().afrStoich(),

@@ -97,6 +97,10 @@ void Engine1DConfig::declare(ParamSet& ps) {
          "factor on cylinder/combustion/premixed_duration_deg");
   ps.add("calibration/friction_scale", friction_scale, "-", 0.3, 2.0,
          "factor on the Chen-Flynn constant and speed terms");
+  ps.add("validation/min_speed_rpm", validation_min_speed_rpm, "rpm", 0.0, 5000.0,
+         "BSFC validation region of the steady check: lowest speed");
+  ps.add("validation/min_load", validation_min_load, "-", 0.0, 1.0,
+         "BSFC validation region of the steady check: lowest load (T_req / T_full-load)");
   ps.add("friction_to_coolant", friction_to_coolant, "-", 0.0, 1.0,
          "share of friction power rejected to the coolant");
   ps.add("files/cylinder", cylinder_file, "cylinder model YAML (relative to this file's folder)");

@@ -85,6 +85,11 @@ struct Engine1DConfig {
   double premixed_duration_scale = 1.0;  // x cylinder/combustion/premixed_duration_deg
   double friction_scale = 1.0;           // x Chen-Flynn A, C, D (B: peak-pressure term kept)
   double initial_turbo_speed_rpm = 40000.0;
+  // BSFC validation region of the steady check (engine_1d_steady, steady_point.hpp): where the
+  // reference fuel map and its own drag curve agree (config comment, README "BSFC against the
+  // reference"); points outside are kept in the tables, flagged
+  double validation_min_speed_rpm = 1100.0;
+  double validation_min_load = 0.35;     // T_req / T_full-load
   // Files of the other models: relative to the folder of the engine YAML itself (so a copy of
   // the config folder, launch argument config:=DIR, brings its own sub-files), or absolute
   std::string cylinder_file = "engine_1d_cylinder.yaml";

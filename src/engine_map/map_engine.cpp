@@ -21,6 +21,8 @@ void MapEngineParams::declare(ParamSet& ps) {
   ps.add("full_load_file", full_load_file, "VECTO .vfld full-load + motoring curve of the reference engine");
   ps.add("fuel_map_file", fuel_map_file, "VECTO .vmap fuel map of the reference engine");
   ps.add("pt1_file", pt1_file, "VECTO PT1 table (time constant vs engine speed)");
+  ps.add("nox_map_file", nox_map_file,
+         "engine-out NOx map (EI over speed x load, nox_map.hpp); empty: constant emission index");
   ps.add("target_peak_torque_Nm", target_peak_torque_Nm, "Nm", 100.0, 5000.0, "peak torque after scaling");
   ps.add("target_peak_power_W", target_peak_power_W, "W", 1e4, 1e6, "peak power after scaling");
   ps.add("idle_speed_rad_s", idle_speed_rad_s, "rad/s", 30.0, 150.0,
@@ -65,6 +67,7 @@ MapEngine::MapEngine(const MapEngineParams& p, const std::string& base_dir) : p_
   const FullLoadCurve ref = readFullLoadCurve(resolve(base_dir, p.full_load_file));
   const FuelMapPoints refmap = readFuelMap(resolve(base_dir, p.fuel_map_file));
   const Table1D refpt1 = readPt1Table(resolve(base_dir, p.pt1_file));
+  if (!p.nox_map_file.empty()) nox_map_ = readNoxMap(resolve(base_dir, p.nox_map_file), "nox_map_file");
   scaling_ = computeScaling(ref, p.target_peak_torque_Nm, p.target_peak_power_W, p.scale_speed_axis);
   fld_ = applyScaling(ref, scaling_);
   map_pts_ = applyScaling(refmap, scaling_);
@@ -111,6 +114,12 @@ double MapEngine::timeConstant(double w) const {
   return p_.pt1_time_constant_factor * pt1_(std::max(w, 0.0));
 }
 
+double MapEngine::noxEmissionIndex(double w, double T) const {
+  if (nox_map_.empty()) return p_.gas.nox_emission_index_kg_per_kg;
+  const double tfl = fullLoadTorque(w);
+  return nox_map_(w, tfl > 0.0 ? T / tfl : 0.0);
+}
+
 double MapEngine::steadyFuel(double w, double T) const {
   if (w <= 0.0) return 0.0;
   const double tmot = motoringTorque(w);
@@ -135,6 +144,7 @@ void MapEngine::reset(double w, double T, double ambient_T_K, double ambient_p_P
   const double tfl = out_.max_torque_Nm;
   out_.gas = computeGasPath(p_.gas, w, torque_, tfl > 0.0 ? torque_ / tfl : 0.0,
                             out_.fuel_mass_flow_kg_s, fuel_ref_kg_s_, ambient_T_K, ambient_p_Pa);
+  out_.gas.nox_mass_flow_kg_s = noxEmissionIndex(w, torque_) * out_.fuel_mass_flow_kg_s;
 }
 
 const MapEngineOutputs& MapEngine::step(double dt, const MapEngineInputs& in) {
@@ -182,6 +192,7 @@ const MapEngineOutputs& MapEngine::step(double dt, const MapEngineInputs& in) {
   out_.fuel_cut = mf <= 0.0;
   out_.gas = computeGasPath(p_.gas, w, torque_, tfl > 0.0 ? torque_ / tfl : 0.0, mf,
                             fuel_ref_kg_s_, in.ambient_T_K, in.ambient_p_Pa);
+  out_.gas.nox_mass_flow_kg_s = noxEmissionIndex(w, torque_) * mf;
   const double pb = torque_ * w;
   out_.fuel_mass_kg += mf * dt;
   out_.fuel_energy_J += out_.gas.fuel_power_W * dt;

@@ -42,6 +42,7 @@
 #include "common/units.hpp"
 #include "engine_map/engine_scaling.hpp"
 #include "engine_map/gas_path.hpp"
+#include "engine_map/nox_map.hpp"
 #include "engine_map/scattered_map.hpp"
 
 namespace hbt::engine_map {
@@ -51,6 +52,9 @@ struct MapEngineParams {
   std::string full_load_file = "config/data/engine/generic_primary_bus_7.7l_200kW/FullLoad.vfld";
   std::string fuel_map_file = "config/data/engine/generic_primary_bus_7.7l_200kW/FCMap.vmap";
   std::string pt1_file = "config/data/vehicle/declaration_2015/PT1.csv";
+  // Engine-out NOx map (nox_map.hpp: EI over speed x load from the calibrated 1D engine); empty:
+  // the constant emission index gas.nox_emission_index_kg_per_kg.
+  std::string nox_map_file = "config/data/engine/nox_map_1d.csv";
   double target_peak_torque_Nm = 1100.0;   // SPEC §3
   double target_peak_power_W = 210000.0;   // SPEC §3
   // Idle speed [rad/s] of the engine (not scaled with the speed axis): where the twin's engine
@@ -133,9 +137,13 @@ class MapEngine {
   const FuelMapPoints& fuelMapPoints() const { return map_pts_; }
   const ScatteredLinearMap& fuelMap() const { return fuel_; }
   const MapEngineParams& params() const { return p_; }
+  /// Engine-out NOx emission index [kg NO2 / kg fuel] at speed ω and brake torque T: the NOx map
+  /// at (ω, T / T_full-load(ω)) (clamped at its edges), or the constant index without a map.
+  double noxEmissionIndex(double speed_rad_s, double torque_Nm) const;
 
  private:
   MapEngineParams p_;
+  Table2D nox_map_;                  // empty: constant emission index
   EngineScaling scaling_;
   FullLoadCurve fld_;
   FuelMapPoints map_pts_;

@@ -5,11 +5,15 @@ subset 9 speeds x 7 loads), prints BSFC mean/max |error|, motoring error range, 
 BSFC error table (set RV=-q to skip the table).
 usage: calib_variant.py NAME "{'e:calibration/woschni_multiplier': 1.0, 'c:friction/A_bar': 0.05}" [steady args]
   keys 'e:<path>' under engine_1d/, 'c:<path>' under cylinder/; output in $CALIB_OUT/NAME
-  env: HBT_SOURCE_DIR (repo root, default .), HBT_BUILD_DIR (default build), CALIB_OUT
-  (default /tmp/calib/v). Run with /usr/bin/python3 (numpy, yaml)."""
+  env: HBT_SOURCE_DIR (repo root, default .), HBT_BUILD_DIR (default build; the tools are looked
+  up in <build>/devel/lib/hybrid_bus_twin, else <build>/src/engine_1d), CALIB_OUT (default
+  /tmp/calib/v), WHTC=1 also runs engine_1d_whtc (full cycle, ~1 min CPU) and prints its fuel vs
+  the map, NOx and torque regression. Steady statistics: all points and the BSFC validation
+  region (column in_region). Run with /usr/bin/python3 (numpy, yaml)."""
 import sys, os, yaml, subprocess, csv, json
 import numpy as np
-R=os.path.abspath(os.environ.get('HBT_SOURCE_DIR','.')); B=os.path.abspath(os.environ.get('HBT_BUILD_DIR','build'))+'/src/engine_1d'
+R=os.path.abspath(os.environ.get('HBT_SOURCE_DIR','.')); B=os.path.abspath(os.environ.get('HBT_BUILD_DIR','build'))
+B=B+'/devel/lib/hybrid_bus_twin' if os.path.exists(B+'/devel/lib/hybrid_bus_twin/engine_1d_steady') else B+'/src/engine_1d'
 import ast
 name=sys.argv[1]; ov=ast.literal_eval(sys.argv[2]) if len(sys.argv)>2 else {}
 args=sys.argv[3:] or ['--speeds','9','--loads','7']
@@ -37,6 +41,13 @@ m=list(csv.DictReader(open(f'{d}/motoring.csv')))
 merr=[float(x['err_pct']) for x in m]
 nox=np.array([float(x['nox_g_kWh']) for x in r])
 print(f'{name}: n={len(r)} conv={conv} mean|e|={np.mean(abs(e)):.2f} max|e|={np.max(abs(e)):.1f} bias={np.mean(e):+.2f} | motoring err {min(merr):+.1f}..{max(merr):+.1f}% mean|{np.mean(np.abs(merr)):.1f}| | NOx median {np.median(nox):.1f} max {nox.max():.1f}')
+ins=np.array([x.get('in_region','1')=='1' for x in r])
+if ins.any(): print(f'{name}: region ({ins.sum()} points) mean|e|={np.mean(abs(e[ins])):.2f} max|e|={np.max(abs(e[ins])):.2f} | NOx median {np.median(nox[ins]):.1f}')
+if os.environ.get('WHTC')=='1':
+  w=subprocess.run(['nice',f'{B}/engine_1d_whtc','--root',R,'--config',f'{d}/engine.yaml','--out',f'{d}/whtc','--no-plot'],capture_output=True,text=True)
+  open(f'{d}/whtc.txt','w').write(w.stdout+w.stderr)
+  for l in (w.stdout+w.stderr).splitlines():
+    if l.startswith('cumulative fuel') or l.startswith('engine-out NOx') or 'torque [Nm]' in l or 'FAIL' in l or 'whtc:' in l: print(f'{name}: WHTC '+l.strip())
 sp=sorted(set(float(x['speed_rpm']) for x in r)); ld=sorted(set(float(x['load']) for x in r))
 if '-q' not in os.environ.get('RV',''):
   print('load  '+' '.join('%6.0f'%s for s in sp))

@@ -2,21 +2,20 @@
 //
 //   engine_1d_steady [--speeds 9] [--loads 21] [--points N] [--solver fsm|tvd] [--out DIR]
 //                    [--max-time 8] [--inertia-factor 0.25] [--config config/engine_1d.yaml]
-//                    [--no-plot]
+//                    [--speed-range lo hi] [--load-range lo hi] [--ambient-C 25] [--no-plot]
 // Grid: `speeds` speeds evenly from 650 to 2450 rpm x `loads` loads evenly from 10 % to 100 % of
 // the reference full-load torque at that speed (9 x 21 = 189 points). --points N keeps N points
 // spread evenly over that grid (fast subsets for tests).
-// Each point: speed imposed, torque requested through the PIDs, macro step 20 ms, run to periodic
-// steady state. Convergence: after >= 1.0 s, the averages of the one-cycle means over the last
-// 0.2 s and over the 0.2 s before differ by less than 0.3 % or 1 Nm (brake torque), 0.3 % (fuel
-// flow), 0.5 % (boost, turbo speed), and the brake torque is within 1 % (or 3 Nm) of the
-// request. Reported values: averages over the last 0.2 s. Points are run in order of rising load at each speed and
+// Each point: runSteadyPoint (steady_point.hpp: speed imposed, torque requested through the
+// PIDs, macro step 20 ms, run to periodic steady state; reported values: averages over the last
+// 0.2 s) at ambient --ambient-C (default 25 C). Points are run in order of rising load at each speed and
 // start from the previous point's state (reset only at a new speed). The steady state does not
 // depend on the turbo inertia J, so J is multiplied by --inertia-factor (default 0.25) to shorten
 // the spool-up; everything else is the transient model.
+// BSFC statistics are printed for all points and for the validation region (config
+// engine_1d/validation: >= 1100 rpm and >= 35 % load, where the reference map and its own drag
+// curve agree); every point stays in the CSV with in_region (0/1) and region_note (the reason).
 // Output: DIR/steady_points.csv (one row per point) and, via plot_steady.py, contour PNGs.
-#include <time.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,23 +25,18 @@
 #include <vector>
 
 #include "engine_1d/engine_1d.hpp"
+#include "engine_1d/steady_point.hpp"
 
 using namespace hbt::engine1d;
 
 namespace {
 constexpr double kRpm = M_PI / 30.0;
 
-double cpuNow() {
-  timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
 struct Args {
   int speeds = 9, loads = 21, points = 0;
   std::string solver, out = "engine_1d_steady_out", config = "config/engine_1d.yaml", root;
   double max_time = 8.0, inertia_factor = 0.25, n_lo = 650.0, n_hi = 2450.0;
-  double load_lo = 0.10, load_hi = 1.0;
+  double load_lo = 0.10, load_hi = 1.0, ambient_C = 25.0;
   bool plot = true;
 };
 
@@ -70,19 +64,18 @@ Args parse(int argc, char** argv) {
     else if (k == "--inertia-factor") a.inertia_factor = std::stod(val());
     else if (k == "--speed-range") { a.n_lo = std::stod(val()); a.n_hi = std::stod(val()); }
     else if (k == "--load-range") { a.load_lo = std::stod(val()); a.load_hi = std::stod(val()); }
+    else if (k == "--ambient-C") a.ambient_C = std::stod(val());
     else if (k == "--no-plot") a.plot = false;
     else {
       std::fprintf(stderr,
                    "usage: engine_1d_steady [--speeds N] [--loads M] [--points N] [--solver fsm|tvd]"
                    " [--out DIR] [--max-time s] [--inertia-factor f] [--speed-range lo hi]"
-                   " [--load-range lo hi] [--config file] [--root dir] [--no-plot]\n");
+                   " [--load-range lo hi] [--ambient-C 25] [--config file] [--root dir] [--no-plot]\n");
       std::exit(2);
     }
   }
   return a;
 }
-
-struct Sample { double torque, fuel, boost, turbo; };
 
 }  // namespace
 
@@ -115,80 +108,36 @@ int main(int argc, char** argv) {
            "fuel_kg_s,fuel_ref_kg_s,air_kg_s,lambda,boost_Pa,boost_target_Pa,T_im_K,p3_Pa,T3_K,"
            "pmax_bar,turbo_krpm,wastegate,nox_g_kWh,exhaust_T_K,back_pressure_Pa,smoke_limited,"
            "converged,sim_s,cpu_s,imep_gross_bar,pmep_bar,fmep_bar,eta_ind_gross,ca50_deg,"
-           "ignition_delay_deg\n";
-    const double dt = 0.02;
-    int last_speed = -1, n_conv = 0;
-    double sum_abs = 0, max_abs = 0, cpu_all = 0, sim_all = 0;
+           "ignition_delay_deg,ambient_T_K,in_region,region_note\n";
+    const BsfcValidationRegion region{p.engine.validation_min_speed_rpm, p.engine.validation_min_load};
+    SteadyPointOptions opt;
+    opt.max_time_s = a.max_time;
+    opt.ambient_T_K = 273.15 + a.ambient_C;
+    int last_speed = -1, n_conv = 0, n_reg = 0;
+    double sum_abs = 0, max_abs = 0, cpu_all = 0, sim_all = 0, sum_reg = 0, max_reg = 0;
     for (const Pt& q : grid) {
       const double w = q.rpm * kRpm, treq = q.load * eng.fullLoadTorque(w);
-      if (q.is != last_speed) eng.reset(w, treq, 298.15);
+      if (q.is != last_speed) eng.reset(w, treq, opt.ambient_T_K);
       last_speed = q.is;
-      Engine1DInputs in;
-      in.speed_rad_s = w;
-      in.torque_request_Nm = treq;
-      std::vector<Sample> hist;
-      std::vector<Engine1DOutputs> outs;
-      const double c0 = cpuNow();
-      double t = 0.0;
-      bool conv = false;
-      const int lag = static_cast<int>(std::lround(0.2 / dt));
-      const Engine1DOutputs* o = nullptr;
-      while (t < a.max_time - 1e-9) {
-        o = &eng.step(dt, in);
-        t += dt;
-        hist.push_back({o->brake_torque_Nm, o->fuel_mass_flow_kg_s, o->boost_pressure_Pa,
-                        o->turbo_speed_rad_s});
-        outs.push_back(*o);
-        if (t < 1.0 || static_cast<int>(hist.size()) < 2 * lag) continue;
-        auto avg = [&](int from) {
-          Sample m{0, 0, 0, 0};
-          for (int k = from; k < from + lag; ++k) {
-            const Sample& h = hist[hist.size() - 2 * lag + k];
-            m.torque += h.torque / lag, m.fuel += h.fuel / lag, m.boost += h.boost / lag,
-                m.turbo += h.turbo / lag;
-          }
-          return m;
-        };
-        const Sample s0 = avg(0), s1 = avg(lag);
-        auto rel = [](double x, double y) { return std::fabs(x - y) / std::max(std::fabs(y), 1e-12); };
-        if (std::fabs(s1.torque - s0.torque) < std::max(0.003 * std::fabs(treq), 1.0) &&
-            rel(s1.fuel, s0.fuel) < 0.003 && rel(s1.boost, s0.boost) < 0.005 &&
-            rel(s1.turbo, s0.turbo) < 0.005 &&
-            std::fabs(s1.torque - treq) < std::max(0.01 * treq, 3.0)) {
-          conv = true;
-          break;
-        }
-      }
-      const double cpu = cpuNow() - c0;
+      const SteadyPointResult sp = runSteadyPoint(eng, q.rpm, treq, opt);
+      const Engine1DOutputs* o = &sp.mean;
+      const bool conv = sp.converged;
+      const double t = sp.sim_s, cpu = sp.cpu_s;
       cpu_all += cpu;
       sim_all += t;
-      // averages over the last 0.2 s
-      Engine1DOutputs mean = outs.back();
-      {
-        const int k0 = std::max(0, static_cast<int>(outs.size()) - lag), nk = static_cast<int>(outs.size()) - k0;
-        auto av = [&](double Engine1DOutputs::*f) {
-          double s = 0;
-          for (int k = k0; k < static_cast<int>(outs.size()); ++k) s += outs[k].*f;
-          return s / nk;
-        };
-        for (double Engine1DOutputs::*f :
-             {&Engine1DOutputs::brake_torque_Nm, &Engine1DOutputs::fuel_mass_flow_kg_s,
-              &Engine1DOutputs::air_mass_flow_kg_s, &Engine1DOutputs::lambda,
-              &Engine1DOutputs::boost_pressure_Pa, &Engine1DOutputs::intake_manifold_T_K,
-              &Engine1DOutputs::turbine_inlet_p_Pa, &Engine1DOutputs::turbine_inlet_T_K,
-              &Engine1DOutputs::turbo_speed_rad_s, &Engine1DOutputs::wastegate_opening,
-              &Engine1DOutputs::nox_mass_flow_kg_s, &Engine1DOutputs::exhaust_T_K,
-              &Engine1DOutputs::friction_torque_Nm})
-          mean.*f = av(f);
-      }
-      o = &mean;
       const double Tb = o->brake_torque_Nm, fuel = o->fuel_mass_flow_kg_s;
-      const double fref = eng.reference().steadyFuel(w, Tb);
-      const double bsfc = fuel / (Tb * w) * 3.6e9, bref = fref / (Tb * w) * 3.6e9;
-      const double err = 100.0 * (bsfc / bref - 1.0);
+      const double fref = sp.fuel_ref_kg_s, bsfc = sp.bsfc_g_kWh, bref = sp.bsfc_ref_g_kWh;
+      const double err = sp.bsfc_err_pct;
+      std::string reason;
+      const bool in_region = region.contains(q.rpm, q.load, &reason);
       n_conv += conv;
       sum_abs += std::fabs(err);
       max_abs = std::max(max_abs, std::fabs(err));
+      if (in_region) {
+        ++n_reg;
+        sum_reg += std::fabs(err);
+        max_reg = std::max(max_reg, std::fabs(err));
+      }
       // Loss split and combustion phasing: mean over the cylinders' last complete cycles.
       double imep_g = 0, pmep = 0, eta_g = 0, ca50 = 0, delay = 0;
       const int ncyl = 6;
@@ -207,20 +156,28 @@ int main(int argc, char** argv) {
           << "," << o->wastegate_opening << "," << o->nox_mass_flow_kg_s / (Tb * w) * 3.6e9 << ","
           << o->exhaust_T_K << "," << o->back_pressure_Pa << "," << o->smoke_limited << ","
           << conv << "," << t << "," << cpu << "," << imep_g / 1e5 << "," << pmep / 1e5 << ","
-          << fmep / 1e5 << "," << eta_g << "," << ca50 << "," << delay << "\n";
+          << fmep / 1e5 << "," << eta_g << "," << ca50 << "," << delay << "," << opt.ambient_T_K << "," << in_region
+          << ",\"" << reason << "\"\n";
       csv.flush();
       std::printf("%6.0f rpm %5.0f Nm (%3.0f%%): Tb %6.1f BSFC %6.1f ref %6.1f err %+5.1f%% lambda %4.2f "
-                  "boost %4.2f bar pmax %5.1f bar NOx %5.2f g/kWh %s %.1f s cpu %.2f s\n",
+                  "boost %4.2f bar pmax %5.1f bar NOx %5.2f g/kWh %s %.1f s cpu %.2f s%s\n",
                   q.rpm, treq, 100 * q.load, Tb, bsfc, bref, err, o->lambda, o->boost_pressure_Pa / 1e5,
                   o->peak_cylinder_pressure_Pa / 1e5, o->nox_mass_flow_kg_s / (Tb * w) * 3.6e9,
-                  conv ? "conv" : "NOT-CONVERGED", t, cpu);
+                  conv ? "conv" : "NOT-CONVERGED", t, cpu, in_region ? "" : " (outside region)");
       std::fflush(stdout);
     }
     const int n = static_cast<int>(grid.size());
-    std::printf("\n%d points (%d converged), solver %s: BSFC error mean |e| = %.2f %%, max |e| = %.2f %% "
-                "(targets 3 %% / 8 %%); CPU %.1f s for %.1f s simulated (%.3f)\n",
-                n, n_conv, p.engine.solver.c_str(), sum_abs / n, max_abs, cpu_all, sim_all,
-                cpu_all / sim_all);
+    std::printf("\n%d points (%d converged), solver %s, ambient %.1f C: all points: BSFC error mean "
+                "|e| = %.2f %%, max |e| = %.2f %%; CPU %.1f s for %.1f s simulated (%.3f)\n",
+                n, n_conv, p.engine.solver.c_str(), a.ambient_C, sum_abs / n, max_abs, cpu_all,
+                sim_all, cpu_all / sim_all);
+    if (n_reg > 0)
+      std::printf("validation region (>= %.0f rpm, >= %.0f %% load; %d points): BSFC error mean |e| = "
+                  "%.2f %%, max |e| = %.2f %% (targets 3 %% / 8 %%)\n",
+                  region.min_speed_rpm, 100.0 * region.min_load, n_reg, sum_reg / n_reg, max_reg);
+    else
+      std::printf("validation region (>= %.0f rpm, >= %.0f %% load): no point of this grid\n",
+                  region.min_speed_rpm, 100.0 * region.min_load);
     if (a.plot) {
       std::fflush(stdout);
       const std::string py = "/usr/bin/python3 '" + a.root + "/src/engine_1d/tools/plot_steady.py' '" +

@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """Contour plots of the engine_1d_steady results: reference BSFC, 1D BSFC and their error over
-speed x torque, plus lambda, turbine-inlet T, peak pressure and NOx.
+speed x torque, plus lambda, turbine-inlet T, peak pressure and NOx. Points outside the BSFC
+validation region (column in_region = 0, reason in region_note) are drawn as crosses, those
+inside as dots; the error panel's title gives the statistics of both.
 Usage: plot_steady.py steady_points.csv OUTDIR"""
 import csv
 import sys
@@ -14,7 +16,8 @@ import matplotlib.tri as mtri  # noqa: E402
 def main():
     path, out = sys.argv[1], sys.argv[2]
     with open(path) as f:
-        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+        rows = [{k: (v if k == "region_note" else float(v)) for k, v in r.items()}
+                for r in csv.DictReader(f)]
     if len(rows) < 3:
         print("plot_steady.py: fewer than 3 points, no contour plot")
         return
@@ -35,9 +38,19 @@ def main():
         else:
             levels = [lo + (hi - lo) * i / 20 for i in range(21)]
         cs = ax.tricontourf(tri, z, levels=levels, cmap=cmap, extend="both")
-        ax.plot(n, t, "k.", ms=2)
+        inside = [r.get("in_region", 1.0) > 0.5 for r in rows]
+        ax.plot([x for x, i in zip(n, inside) if i], [y for y, i in zip(t, inside) if i], "k.", ms=3)
+        ax.plot([x for x, i in zip(n, inside) if not i], [y for y, i in zip(t, inside) if not i],
+                "kx", ms=3, mew=0.6)
         fig.colorbar(cs, ax=ax)
-        ax.set_title(title)
+        if key == "bsfc_err_pct":
+            e_all = [abs(v) for v in z]
+            e_in = [abs(v) for v, i in zip(z, inside) if i]
+            title += (f"\nall {len(e_all)}: mean |e| {sum(e_all) / len(e_all):.2f} %, max {max(e_all):.1f} %")
+            if e_in:
+                title += (f"; region (dots) {len(e_in)}: mean {sum(e_in) / len(e_in):.2f} %, "
+                          f"max {max(e_in):.1f} %")
+        ax.set_title(title, fontsize=9 if key == "bsfc_err_pct" else None)
         ax.set_xlabel("speed [rpm]")
     axs[0].set_ylabel("brake torque [Nm]")
     fig.tight_layout()
