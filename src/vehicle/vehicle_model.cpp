@@ -252,8 +252,11 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   accel_pedal_ = accel;
   const double T_driver = T_floor + accel * (T_max - T_floor);
 
-  // Idle governor: PI on (ω_idle - ω_e) with the present load as feed-forward; acts as a floor
-  // under the driver's demand (integrates only while it is the active demand).
+  // Idle governor: PID on (ω_idle - ω_e), D on the crank acceleration of the last step, with the
+  // present load as feed-forward; acts as a floor under the driver's demand. Its integral only
+  // corrects the engine's torque error: it integrates while the governor is the active demand
+  // AND the crank speed is free (neutral, 1C); locked or shifting, the wheels impose the speed
+  // and the integral is held. Gains for both engines' response (config/vehicle.yaml).
   const double e = d.idle_speed_rad_s - w_;
   const double T_load = r.T_aux + r.T_drag + (gs_.mode == DriveMode::Converter ? r.T_pump : 0.0);
   const auto& dp = p_.driver;
