@@ -9,6 +9,7 @@ EngineControllers::EngineControllers(const Engine1DConfig& cfg, double afr, doub
     : cfg_(cfg),
       boost_(cfg.boost_speed_rpm, cfg.boost_load, cfg.boost_pressure_ratio, "engine_1d",
              "engine_1d/control/boost_pressure_ratio"),
+      torque_model_(cfg.torque_dead_angle_deg),
       afr_(afr),
       fuel_ref_(fuel_ref) {
   PidGains f;
@@ -25,8 +26,9 @@ EngineControllers::EngineControllers(const Engine1DConfig& cfg, double afr, doub
   wg_pid_ = Pid(w);
 }
 
-void EngineControllers::reset(double a) {
+void EngineControllers::reset(double a, double torque_Nm) {
   fuel_pid_.reset(0.0);
+  torque_model_.reset(torque_Nm);
   wg_pid_.reset(cfg_.wg_ki > 0.0 ? std::clamp(a, 0.0, 1.0) / cfg_.wg_ki : 0.0);
 }
 
@@ -42,6 +44,9 @@ ControlCommand EngineControllers::update(double dt, const ControlInputs& in) {
   ControlCommand c;
   const double treq = limitedRequest(in.torque_request, in.full_load, in.motoring);
   c.torque_target_Nm = treq;
+  // expected brake torque from the requests so far, then this step's request joins the history
+  c.torque_model_Nm = torque_model_.expected();
+  torque_model_.push(in.omega * dt * (180.0 / M_PI), treq);
   const double cycles_per_s = 6.0 * in.omega / (4.0 * M_PI);  // cylinder-cycles per second
   // --- boost ---
   const double load = in.full_load > 0.0 ? std::max(treq, 0.0) / in.full_load : 0.0;
@@ -55,7 +60,7 @@ ControlCommand EngineControllers::update(double dt, const ControlInputs& in) {
   }
   c.feedforward_kg = std::max(in.feedforward_fuel_kg_s, 0.0) / cycles_per_s;
   c.smoke_limit_kg = in.air_flow / cycles_per_s / (cfg_.lambda_smoke * afr_);
-  const double e = treq - in.brake_torque;
+  const double e = c.torque_model_Nm - in.brake_torque;
   const double i_before = fuel_pid_.integral();
   const double trim = fuel_pid_.update(e, dt);
   const double m = c.feedforward_kg + trim;

@@ -60,7 +60,7 @@ void Engine1D::reset(double w, double torque, double T_amb, double p_amb, double
   in.fuel_per_cycle_kg = treq > tmot ? ref_->steadyFuel(w, treq) / cps : 0.0;
   asm_.reset();
   asm_ = std::make_unique<EngineAssembly>(P_, *tc_, maps_, in);
-  ctl_->reset(0.5);
+  ctl_->reset(0.5, treq);
   cmd_ = ControlCommand();
   cmd_.fuel_per_cycle_kg = in.fuel_per_cycle_kg;
   cmd_.wastegate_opening = 0.5;

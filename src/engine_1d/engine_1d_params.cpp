@@ -65,6 +65,8 @@ void Engine1DConfig::declare(ParamSet& ps) {
   ps.add("control/fuel_ki", fuel_ki, "kg/(Nm s)", 0.0, 1e-4, "torque PID integral gain");
   ps.add("control/fuel_trim_max", fuel_trim_max, "-", 0.0, 2.0,
          "PID trim limited to +- this fraction of the full-load fuel");
+  ps.add("control/torque_dead_angle_deg", torque_dead_angle_deg, "deg", 0.0, 720.0,
+         "crank angle from a torque request to the first brake torque it gives (fuel trim model)");
   ps.add("control/lambda_smoke", lambda_smoke, "-", 1.0, 3.0, "smoke limiter: minimum lambda");
   ps.add("control/wastegate_kp", wg_kp, "1/Pa", 0.0, 1e-2, "boost PID proportional gain");
   ps.add("control/wastegate_ki", wg_ki, "1/(Pa s)", 0.0, 1e-1, "boost PID integral gain");

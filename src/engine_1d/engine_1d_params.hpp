@@ -62,6 +62,8 @@ struct Engine1DConfig {
   // Controllers
   double fuel_kp = 2.0e-8, fuel_ki = 1.5e-7;     // kg per cylinder-cycle per Nm (and per Nm s)
   double fuel_trim_max = 0.5;                    // |trim| <= fraction of the feed-forward + ...
+  double torque_dead_angle_deg = 220.0;          // request -> brake torque dead angle of the
+                                                 // torque response model (controllers.hpp) [deg]
   double lambda_smoke = 1.25;                    // smoke limiter: lambda >= this
   double wg_kp = 3.0e-5, wg_ki = 6.0e-5;         // opening per Pa (and per Pa s)
   std::vector<double> boost_speed_rpm{600, 1000, 1400, 1800, 2300};

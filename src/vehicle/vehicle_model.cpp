@@ -53,7 +53,7 @@ void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
   h_ = 0.0;
   t_since_shift_ = 1e9;
   T_in_est_ = T_ax_est_ = 0.0;
-  brake_force_ = accel_pedal_ = idle_integral_ = 0.0;
+  brake_force_ = accel_pedal_ = idle_integral_ = crank_accel_ = 0.0;
   hold_ = start_request_ = locking_ = false;
   last_dv_ = 0.0;
   s_target_ = s_;
@@ -146,9 +146,10 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   out_.applied_brake_force_N = c.F_brake;
   c.grade = grade;
   c.rho = road_.airDensity(in.ambient_T_K);
-  const double v_start = v_, aux_start_J = out_.energy.aux_J;
+  const double v_start = v_, aux_start_J = out_.energy.aux_J, w_start = w_;
   const int n = std::max(1, static_cast<int>(std::ceil(dt / p_.numerics.max_substep_s - 1e-9)));
   for (int i = 0; i < n; ++i) substep(dt / n, c);
+  crank_accel_ = (w_ - w_start) / dt;  // torque-driven, after this step's clutch impulse
   if (!std::isfinite(v_) || !std::isfinite(w_))
     throw ModelDivergence("vehicle", "state", "speed became non-finite");
   t_since_shift_ += dt;
@@ -251,16 +252,21 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   accel_pedal_ = accel;
   const double T_driver = T_floor + accel * (T_max - T_floor);
 
-  // Idle governor: PI on (ω_idle - ω_e) with the present load as feed-forward; acts as a floor
-  // under the driver's demand (integrates only while it is the active demand).
+  // Idle governor: PID on (ω_idle - ω_e), D on the crank acceleration of the last step, with the
+  // present load as feed-forward; acts as a floor under the driver's demand. Its integral only
+  // corrects the engine's torque error: it integrates while the governor is the active demand
+  // AND the crank speed is free (neutral, 1C); locked or shifting, the wheels impose the speed
+  // and the integral is held. Gains for both engines' response (config/vehicle.yaml).
   const double e = d.idle_speed_rad_s - w_;
   const double T_load = r.T_aux + r.T_drag + (gs_.mode == DriveMode::Converter ? r.T_pump : 0.0);
   const auto& dp = p_.driver;
-  double T_gov = T_load + dp.idle_kp_Nm_s * e + dp.idle_ki_Nm * idle_integral_;
+  const double T_pd = T_load + dp.idle_kp_Nm_s * e - dp.idle_kd_Nm_s2 * crank_accel_;
+  double T_gov = T_pd + dp.idle_ki_Nm * idle_integral_;
   if (!in.engine_on) T_gov = T_driver;  // stopped/cranking: no governor, integrator frozen
-  if (T_gov > T_driver && dp.idle_ki_Nm > 0.0) {
+  const bool governs = gs_.mode == DriveMode::Neutral || gs_.mode == DriveMode::Converter;
+  if (T_gov > T_driver && governs && dp.idle_ki_Nm > 0.0) {
     idle_integral_ = std::clamp(idle_integral_ + e * dt, -200.0 / dp.idle_ki_Nm, 400.0 / dp.idle_ki_Nm);
-    T_gov = T_load + dp.idle_kp_Nm_s * e + dp.idle_ki_Nm * idle_integral_;
+    T_gov = T_pd + dp.idle_ki_Nm * idle_integral_;
   }
   double demand = std::clamp(std::max(T_driver, T_gov), T_min, std::max(T_max_total, T_min));
   // TCU torque intervention in the inertia phase of an upshift: the engine gives up the torque

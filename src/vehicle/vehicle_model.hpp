@@ -205,6 +205,7 @@ class VehicleModel {
   GearState gs_;
   double T_in_est_ = 0.0, T_ax_est_ = 0.0;  // transmitted torques (loss evaluation)
   double brake_force_ = 0.0, accel_pedal_ = 0.0, idle_integral_ = 0.0;
+  double crank_accel_ = 0.0;  // dω_e/dt over the last macro step (idle governor D) [rad/s²]
   double aux_payback_W_ = 0.0;  // extra steering + compressor power this step (stop-start debt)
   bool hold_ = false, start_request_ = false;
   double last_dv_ = 0.0;

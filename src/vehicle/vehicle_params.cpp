@@ -69,6 +69,7 @@ void VehicleParams::declare(ParamSet& ps) {
   ps.add("max_distance_error_m", r.max_distance_error_m, "m", 0.0, 100.0, "saturation of the distance error = PI integral");
   ps.add("idle_kp_Nm_s", r.idle_kp_Nm_s, "Nm s/rad", 0.0, 500.0, "idle governor P");
   ps.add("idle_ki_Nm", r.idle_ki_Nm, "Nm/rad", 0.0, 2000.0, "idle governor I");
+  ps.add("idle_kd_Nm_s2", r.idle_kd_Nm_s2, "Nm s^2/rad", 0.0, 50.0, "idle governor D (on -dw/dt)");
 
   ps.setPrefix("aux/");
   aux.declare(ps);

@@ -86,7 +86,8 @@ struct DriverParams {
   double stop_decel_m_s2 = 1.5;           // braking to standstill once the target is at rest
   double max_distance_error_m = 2.0;      // saturation of the distance error (PI state) [m]
   double idle_kp_Nm_s = 25.0;             // idle governor PI on ω_idle - ω_e
-  double idle_ki_Nm = 60.0;
+  double idle_ki_Nm = 10.0;
+  double idle_kd_Nm_s2 = 0.7;             // ... and D on the crank acceleration dω_e/dt
 };
 
 struct AuxParams {

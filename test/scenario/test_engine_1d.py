@@ -3,7 +3,8 @@
 in `scripts/twin bench 1d`): the crank-angle 1D engine coupled to the vehicle through the step
 protocol. Checks: the run completes; every output is finite; the brake work the engine reports
 equals the work the vehicle's driveline received (1 %); the mean efficiency of the fuel is
-plausible; engine-out NOx is produced; the solver is selectable (fsm and tvd both run)."""
+plausible; engine-out NOx is produced; the solver is selectable (fsm and tvd both run); the idle
+after the first bus stop (t = 51.5 s) settles (issue 8: it oscillated for ~4 s)."""
 import math
 import os
 import shutil
@@ -31,8 +32,9 @@ class Engine1DScenario(unittest.TestCase):
     def setUpClass(cls):
         cls.tmp = tempfile.mkdtemp(prefix="hbt_1d_")
         cls.runs = {}
-        # fsm past t = 40 s: a cylinder's unburned zone empties there (zone-merge regression)
-        for solver, until in (("fsm", 45.0), ("tvd", 3.0)):
+        # fsm past t = 40 s: a cylinder's unburned zone empties there (zone-merge regression);
+        # to 57 s: the first bus stop (neutral at standstill 51.5-57.0 s)
+        for solver, until in (("fsm", 57.0), ("tvd", 3.0)):
             out = os.path.join(cls.tmp, solver)
             st = run_util.run_launch(LAUNCH, out, engine="1d", solver=solver, until=until,
                                      timeout=20.0, record_period=0)
@@ -48,7 +50,7 @@ class Engine1DScenario(unittest.TestCase):
         bag = os.path.join(out, "run.bag")
         eng = messages(bag, "/engine/state")
         exh = messages(bag, "/engine/exhaust")
-        self.assertEqual(len(eng), 4501)
+        self.assertEqual(len(eng), 5701)
         for m in eng:
             for f in m.__slots__:
                 v = getattr(m, f)
@@ -60,6 +62,29 @@ class Engine1DScenario(unittest.TestCase):
         # idle at t = 0..12 s: the engine holds ~700 rpm under the vehicle's idle governor
         idle = [m.engine_speed_rad_s * 60 / (2 * math.pi) for m in eng if 5.0 < m.header.stamp.to_sec() < 12.0]
         self.assertLess(max(abs(n - 700.0) for n in idle), 30.0)
+
+    def test_idle_settles_after_the_first_stop(self):
+        # from the standstill-neutral shift: speed within +-10 rpm of 700 and brake torque within
+        # +-10 Nm of its last-second mean within 1 s (map engine: 0.48 s; 1D before the fix ~4 s,
+        # -64..255 Nm); the torque never dips towards motoring
+        bag = os.path.join(self.runs["fsm"][0], "run.bag")
+        veh = messages(bag, "/vehicle/state")
+        tq = {round(m.header.stamp.to_sec(), 2): m.brake_torque_nm for m in messages(bag, "/engine/state")}
+        t0 = next(m.header.stamp.to_sec() for m in veh
+                  if m.header.stamp.to_sec() > 45.0 and m.drive_mode == 0 and m.speed_m_s == 0.0)
+        neutral = [(m.header.stamp.to_sec(), m.engine_speed_rad_s * 60 / (2 * math.pi),
+                    tq[round(m.header.stamp.to_sec(), 2)]) for m in veh
+                   if m.header.stamp.to_sec() >= t0 and m.drive_mode == 0]
+        self.assertGreater(neutral[-1][0] - t0, 5.0)
+        final = sum(T for t, _, T in neutral if t > neutral[-1][0] - 1.0) / \
+            len([1 for t, _, _ in neutral if t > neutral[-1][0] - 1.0])
+        late = [t - t0 for t, n, T in neutral if abs(n - 700.0) > 10.0 or abs(T - final) > 10.0]
+        settle = (max(late) + 0.01) if late else 0.0
+        print("1D idle after the first stop: settling %.2f s, %.1f-%.1f rpm, %.1f-%.1f Nm" % (
+            settle, min(n for _, n, _ in neutral), max(n for _, n, _ in neutral),
+            min(T for _, _, T in neutral), max(T for _, _, T in neutral)))
+        self.assertLess(settle, 1.0)
+        self.assertGreater(min(T for _, _, T in neutral), 20.0)
 
     def test_energy_consistency(self):
         bag = os.path.join(self.runs["fsm"][0], "run.bag")
@@ -104,7 +129,11 @@ class Engine1DLoops(unittest.TestCase):
             self.assertEqual(st["status"], "ok", (n, st))
         a, b = self.last("base", "/engine/state"), self.last("soot", "/engine/state")
         self.assertGreater(b.back_pressure_pa, a.back_pressure_pa + 300.0)
-        self.assertGreater(b.fuel_mass_kg, a.fuel_mass_kg * 1.0002)  # measured +0.06 %
+        # fuel per positive brake work (the pumping loss): measured +0.11 %. Fuel over the fixed
+        # 20 s also depends on the work delivered, which the 1D torque trim now gives after the
+        # engine's response time instead of with an overshoot (issue 8): -0.03 % there.
+        ratio = (b.fuel_mass_kg / b.positive_work_j) / (a.fuel_mass_kg / a.positive_work_j)
+        self.assertGreater(ratio, 1.0004)
 
     def test_cold_coolant_raises_fuel(self):
         a, w = self.last("base", "/engine/state"), self.last("warm", "/engine/state")
