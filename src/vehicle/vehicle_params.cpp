@@ -37,7 +37,6 @@ void VehicleParams::declare(ParamSet& ps) {
   ps.add("engine_inertia_kg_m2", d.engine_inertia_kg_m2, "kg m^2", 0.1, 20.0, "crank + flywheel");
   ps.add("tc_pump_inertia_kg_m2", d.tc_pump_inertia_kg_m2, "kg m^2", 0.0, 10.0, "TC pump side");
   ps.add("gearbox_input_inertia_kg_m2", d.gearbox_input_inertia_kg_m2, "kg m^2", 0.0, 10.0, "turbine + input");
-  ps.add("idle_speed_rad_s", d.idle_speed_rad_s, "rad/s", 30.0, 150.0, "engine idle speed");
   ps.add("neutral_drag_torque_Nm", d.neutral_drag_torque_Nm, "Nm", 0.0, 100.0, "AT spin loss in neutral at pump speed");
 
   ShiftParams& s = shift;

@@ -17,6 +17,23 @@
 
 namespace hbt::vehicle {
 
+// The idle speed is the engine's: idle_speed_rad_s of the engine's YAML (engine_config_file,
+// config/engine_map.yaml; both engine models start there). Only that key is read from it.
+void VehicleParticipant::readEngineIdleSpeed(VehicleParams& p) {
+  std::string file;
+  if (!pnh_.getParam("engine_config_file", file)) return;  // outside a scenario: the model's default
+  const ParamSource all = readYamlParams(file);
+  const auto it = all.values.find("idle_speed_rad_s");
+  if (it == all.values.end())
+    throw InputError(file, "idle_speed_rad_s", "missing: the engine's idle speed (the vehicle's idle governor holds it)");
+  ParamSource one;
+  one.file = file;
+  one.values.insert(*it);
+  ParamSet ps;
+  ps.add("idle_speed_rad_s", p.driveline.idle_speed_rad_s, "rad/s", 30.0, 150.0, "engine idle speed");
+  applyParams(ps, one);
+}
+
 void VehicleParticipant::configure() {
   VehicleParams p;
   std::string aux_file;
@@ -36,7 +53,9 @@ void VehicleParticipant::configure() {
   ParamSet ps;
   p.declare(ps);
   cosim::applyRosParams(pnh_, ps, configFile(),
-                        {"mission/", "mission_config_file", "aux_config_file", "gearbox_config_file", "em_config_file"});
+                        {"mission/", "mission_config_file", "aux_config_file", "gearbox_config_file", "em_config_file",
+                         "engine_config_file"});
+  readEngineIdleSpeed(p);
   double payload_kg = p.chassis.payload_kg;
   nh_.param("/scenario/payload_kg", payload_kg, payload_kg);
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);

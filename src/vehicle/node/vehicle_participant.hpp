@@ -15,7 +15,9 @@
 // config/mission.yaml (its vehicle/* road-load keys are overridden by the vehicle model's mass,
 // drag area, rolling resistance and rotating mass so that the profile is planned for this bus);
 // /scenario/{ambient_temperature_c, payload_kg, cycle_file, out_dir, package_dir}; hybrid:
-// em_config_file (config/emachine.yaml) -> the P1 rotor's inertia x ratio² joins the crank's.
+// em_config_file (config/emachine.yaml) -> the P1 rotor's inertia x ratio² joins the crank's;
+// engine_config_file (config/engine_map.yaml) -> its idle_speed_rad_s is the crank's start and
+// the idle governor's set point (one definition of the idle speed).
 // Side outputs at start-up: <out_dir>/profile.csv (time-based target profile) and
 // <out_dir>/stops.csv (stop positions and times); the mission duration in its ANNOUNCE.
 // Diagnostics (README "Diagnostics"): warning driver_not_tracking (|target - actual speed| beyond
@@ -48,6 +50,7 @@ class VehicleParticipant : public cosim::Participant {
   void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
+  void readEngineIdleSpeed(VehicleParams& p);
   void writeStops(const std::string& path) const;
   std::unique_ptr<VehicleModel> model_;
   mission::MissionProfile profile_;

@@ -14,7 +14,13 @@ class CoupledSim {
  public:
   CoupledSim(const VehicleParams& vp, const engine_map::MapEngineParams& ep,
              const std::string& base_dir = "")
-      : veh_(vp, base_dir), eng_(ep, base_dir) {}
+      : veh_(withEngineIdle(vp, ep), base_dir), eng_(ep, base_dir) {}
+
+  /// The vehicle's idle speed is the engine's (as the vehicle node reads it from engine_map.yaml).
+  static VehicleParams withEngineIdle(VehicleParams vp, const engine_map::MapEngineParams& ep) {
+    vp.driveline.idle_speed_rad_s = ep.idle_speed_rad_s;
+    return vp;
+  }
 
   /// Road grade (rise/run) vs the bus's own distance [m] (as the ROS vehicle participant).
   void setGradeProfile(const std::vector<double>& distance_m, const std::vector<double>& grade) {
