@@ -269,6 +269,33 @@ class Failures(unittest.TestCase):
         cfg = self.config_copy("engine_map.yaml", lambda t: t + "\nfuel_lhv_j_per_kg: 42.7e6\n")
         self.expect_rejected("engine_map.yaml", "fuel_lhv_j_per_kg", config=cfg)
 
+    def test_one_idle_speed(self):
+        """The idle speed is defined once, in engine_map.yaml: 750 rpm there moves the engine's
+        start, the vehicle's crank and the idle governor's set point together; the vehicle's
+        resolved configuration names that file; without the key the run stops naming it."""
+        import math
+        import rosbag
+        w = 750.0 * math.pi / 30.0
+        cfg = self.config_copy("engine_map.yaml", lambda t: t.replace("idle_speed_rad_s: 73.3038",
+                                                                       "idle_speed_rad_s: %.6f" % w))
+        out = os.path.join(self.tmp, "idle750")
+        st = run_util.run_launch(LAUNCH, out, until=5.0, config=cfg, record_period=0)
+        self.assertEqual(st["status"], "ok", st)
+        with rosbag.Bag(os.path.join(out, "run.bag")) as b:
+            v0 = next(m for _, m, _ in b.read_messages(topics=["/vehicle/state"]))
+            e0 = next(m for _, m, _ in b.read_messages(topics=["/engine/state"]))
+            v_end = None
+            for _, v_end, _ in b.read_messages(topics=["/vehicle/state"]):
+                pass
+        self.assertAlmostEqual(v0.engine_speed_rad_s, w, places=5)
+        self.assertAlmostEqual(e0.engine_speed_rad_s, w, places=5)
+        self.assertAlmostEqual(v_end.engine_speed_rad_s, w, delta=3.0)  # the governor holds it (at rest)
+        with open(os.path.join(out, "resolved_config", "vehicle.csv")) as f:
+            self.assertIn("engine_map.yaml,idle_speed_rad_s,%.6f" % w, f.read())
+        shutil.rmtree(os.path.join(self.tmp, "config"))
+        cfg = self.config_copy("engine_map.yaml", lambda t: t.replace("idle_speed_rad_s: 73.3038", ""))
+        self.expect_rejected("engine_map.yaml", "idle_speed_rad_s", config=cfg)
+
     def test_nan_parameter(self):
         cfg = self.config_copy("engine_map.yaml", lambda t: t.replace("volumetric_efficiency: 0.90", "volumetric_efficiency: .nan", 1))
         self.expect_rejected("engine_map.yaml", "volumetric_efficiency", config=cfg)
