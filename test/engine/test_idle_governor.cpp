@@ -31,6 +31,7 @@
 #include "engine_1d/engine_1d_model.hpp"
 #include "engine_map/map_engine_model.hpp"
 #include "vehicle/vehicle_model.hpp"
+#include "../vehicle/stop_profile.hpp"
 
 using namespace hbt;
 
@@ -67,25 +68,9 @@ std::unique_ptr<engine::EngineModel> makeEngine(const std::string& name) {
                                                    repoRoot());
 }
 
-// Target speed [m/s] and acceleration [m/s²] at t [s].
-struct StopProfile {
-  double v30 = units::kmhToMps(30.0);
-  double t_acc_end = 1.0 + v30 / 0.8, t_dec = 25.0, t_zero = 25.0 + v30 / 0.9;
-  double t_go = t_zero + 8.0;
-  double v(double t) const {
-    if (t < 1.0) return 0.0;
-    if (t < t_acc_end) return 0.8 * (t - 1.0);
-    if (t < t_dec) return v30;
-    if (t < t_zero) return v30 - 0.9 * (t - t_dec);
-    if (t < t_go) return 0.0;
-    return std::min(v30, 0.8 * (t - t_go));
-  }
-  double a(double t) const {
-    if (t >= 1.0 && t < t_acc_end) return 0.8;
-    if (t >= t_dec && t < t_zero) return -0.9;
-    if (t >= t_go && 0.8 * (t - t_go) < v30) return 0.8;
-    return 0.0;
-  }
+// Target: one stop from 30 km/h, standing 8 s (test/vehicle/stop_profile.hpp).
+struct StopProfile : vehicle::test::StopProfile {
+  StopProfile() : vehicle::test::StopProfile(8.0) {}
 };
 
 struct StopResult {

@@ -13,6 +13,7 @@
 
 #include "common/units.hpp"
 #include "vehicle/tools/coupled_sim.hpp"
+#include "stop_profile.hpp"
 
 using namespace hbt;
 using namespace hbt::vehicle;
@@ -21,37 +22,10 @@ namespace {
 
 constexpr double kDt = 0.01;
 
-// Target: stand 1 s, +0.8 m/s² to 30 km/h, cruise to 25 s, -0.9 m/s² to rest (the profile's
-// stop deceleration), stand kStop s, then +0.8 m/s² again. Piecewise linear in t.
+// Target: one stop, standing kStop s (test/vehicle/stop_profile.hpp).
 constexpr double kStop = 5.0;
-struct StopProfile {
-  double v30 = units::kmhToMps(30.0);
-  double t_acc_end = 1.0 + v30 / 0.8, t_dec = 25.0, t_zero = 25.0 + v30 / 0.9;
-  double t_go = t_zero + kStop;
-  double v(double t) const {
-    if (t < 1.0) return 0.0;
-    if (t < t_acc_end) return 0.8 * (t - 1.0);
-    if (t < t_dec) return v30;
-    if (t < t_zero) return v30 - 0.9 * (t - t_dec);
-    if (t < t_go) return 0.0;
-    return std::min(v30, 0.8 * (t - t_go));
-  }
-  double a(double t) const {
-    if (t >= 1.0 && t < t_acc_end) return 0.8;
-    if (t >= t_dec && t < t_zero) return -0.9;
-    if (t >= t_go && 0.8 * (t - t_go) < v30) return 0.8;
-    return 0.0;
-  }
-  // Exact distance of the target at t (the stop position for t in [t_zero, t_go]).
-  double s(double t) const {
-    double s = 0.0, tp = 0.0;
-    for (int i = 1; i <= 200000 && tp < t; ++i) {  // trapezoid on a fine grid (exact: linear)
-      const double tn = std::min(t, i * 1e-3);
-      s += 0.5 * (v(tp) + v(tn)) * (tn - tp);
-      tp = tn;
-    }
-    return s;
-  }
+struct StopProfile : test::StopProfile {
+  StopProfile() : test::StopProfile(kStop) {}
 };
 
 }  // namespace
