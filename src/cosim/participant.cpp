@@ -124,6 +124,7 @@ class Participant::Hooks : public core::ParticipantHooks {
     s.compute_time_s = c.compute_time_s;
     s.message = c.message;
     s.outputs = c.outputs;
+    s.inputs = c.inputs;
     s.observer = c.observer;
     s.mission_duration_s = c.mission_duration_s;
     s.step_multiple = c.step_multiple;
@@ -248,11 +249,12 @@ void Participant::onCommand(const StepCommand::ConstPtr& m) {
   std::lock_guard<std::recursive_mutex> lock(mutex_);
   core::Command c;
   c.command = static_cast<core::Cmd>(m->command);
-  if (m->command > StepCommand::START) return;  // unknown command
+  if (m->command > StepCommand::QUERY) return;  // unknown command
   c.step = m->step;
+  c.observer_step = m->observer_step;
+  c.confirmed = m->confirmed;
   c.t = static_cast<core::Nanos>(m->header.stamp.toNSec());
   c.dt_s = m->dt_s;
-  c.group = m->group;
   c.reason = m->reason;
   if (m->command == StepCommand::START || m->command == StepCommand::SYNC) {  // SYNC: the table so far
     c.table.topics = m->topics;
@@ -261,6 +263,11 @@ void Participant::onCommand(const StepCommand::ConstPtr& m) {
     c.table.participants = m->participants;
     c.table.participant_multiple = m->participant_multiple;
     c.table.participant_group = m->participant_group;
+    c.table.reader_topic = m->reader_topic;
+    c.table.reader_multiple = m->reader_multiple;
+    c.table.reader_fresh = m->reader_fresh;
+    c.table.window = m->window;
+    c.table.report_wall_s = m->report_wall_s;
   }
   core_.onCommand(c);
 }

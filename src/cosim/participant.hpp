@@ -5,19 +5,20 @@
 //
 // Protocol (the master stepper drives it, see stepper.hpp and core/stepper_core.hpp):
 //  1. start-up: configure() reads and validates parameters (hbt::InputError -> ERROR status naming
-//     file and key); the participant ANNOUNCEs itself every 100 ms (wall) with its output topics,
-//     until START. On each SYNC round r it checks its links -- every input has a connected
-//     publisher and every output has as many connected subscribers as the master lists -- and
-//     answers READY(r) or WAITING(r). After one round in which everyone answered READY the stepper
-//     sends START with the table of producers (topic -> macro step, group); every participant then
-//     publishes its outputs stamped t_0 = 0, so nothing of t = 0 is lost.
+//     file and key) and declares inputs and outputs; the participant ANNOUNCEs itself every
+//     100 ms (wall) with its output and input topics, until START. On each SYNC round r it checks
+//     its links -- every input has a connected publisher and every output has as many connected
+//     subscribers as the master lists -- and answers READY(r) or WAITING(r). After one round in
+//     which everyone answered READY the stepper sends START with the table of producers (topic ->
+//     macro step, group) and readers; every participant then publishes its outputs stamped
+//     t_0 = 0, so nothing of t = 0 is lost.
 //  2. Rates. The stepper's base step is dt (launch `step`). A participant's macro step P is
 //     `cosim/macro_step_s` in its private namespace (its YAML; absent = dt). P must be an
 //     integer multiple m of dt (checked before step 0: not a multiple, <= 0, NaN, not a number ->
-//     ERROR naming the file and the key). The stepper commands it only at base steps k with
-//     k % m == 0: step(t_k, P) advances t_k -> t_k + P and its outputs are stamped t_k + P; they
-//     hold (are what every consumer reads) until its next step.
-//  3. Held values. At STEP k (stamp t_k) the participant waits (event driven) until every input
+//     ERROR naming the file and the key). It steps only at base steps k with k % m == 0:
+//     step(t_k, P) advances t_k -> t_k + P and its outputs are stamped t_k + P; they hold (are
+//     what every consumer reads) until its next step.
+//  3. Held values. For its step at t_k the participant waits (event driven) until every input
 //     has the message its rule names, then calls step(t_k, P); Input::at(t_k) returns it. For a
 //     producer of macro step P_p:
 //        Jacobi (producer in the same or a later group):  stamped floor(t_k / P_p) * P_p
@@ -27,12 +28,19 @@
 //     independent of arrival order. The recorder (an observer) always reads by the Jacobi rule.
 //     A slow participant sees point samples of faster producers (no averaging over its step):
 //     where the mean over the step matters, use a cumulative output of the producer (e.g.
-//     fuel_mass_kg, nox_mass_kg) and take the difference between two steps.
-//  4. Groups (stepper param `order`): within base step k the stepper commands group 1, waits for
-//     all its DONE, then group 2, ... The recorder is in the last group.
-//  5. The participant answers DONE(k), or FINISHED(k) when finished() says it reached the end of
-//     its input -- the only end-of-mission signal (the mission duration, for the progress line
-//     only, travels in ANNOUNCE: setMissionDuration()).
+//     fuel_mass_kg, nox_mass_kg, heat_to_coolant_j) and take the difference between two steps.
+//  4. Stepping is data-driven: the stepper GRANTs a horizon (at most 2 W base steps ahead of the
+//     slowest participant, W = `window_steps`), and every participant steps each of its due
+//     steps below it as soon as its inputs are there -- so a Gauss-Seidel chain (stepper param
+//     `order`, e.g. vehicle -> EMS -> engine) runs in its order by its data alone, with no
+//     command per group or base step. Outputs are sent only at the stamps some participant
+//     reads (output.hpp).
+//  5. The participant reports DONE(n) (every due step below n done) at every multiple of W, when
+//     it did all it was granted and at least every timeout / 4 of wall time; FINISHED when
+//     finished() says it reached the end of its input -- the only end-of-mission signal (the
+//     mission duration, for the progress line only, travels in ANNOUNCE: setMissionDuration()).
+//     It steps no more after FINISHED; others may have stepped a little past the end (their
+//     later states reach no one: the end, t_end, is the step after the FINISHED one).
 //  6. FINISH / ABORT: close() flushes files (FINISH waits for readyToClose()); answers CLOSED.
 // Any exception thrown by the model is reported as ERROR with the participant's name and the
 // message; the stepper then aborts the run.
@@ -64,6 +72,7 @@
 #include "cosim/core/diagnostics_params.hpp"
 #include "cosim/core/participant_core.hpp"
 #include "cosim/input_buffer.hpp"
+#include "cosim/output.hpp"
 
 namespace hbt::cosim {
 
@@ -115,16 +124,12 @@ class Participant {
     addCustomInput(std::move(in));
     return ref;
   }
-  /// An output topic. Publish a boost::shared_ptr (boost::make_shared<M>(msg)), never the
-  /// message by value: roscpp then hands intra-process subscribers (nodelets) the same object
-  /// without serialising it and skips its poll-thread wake-up (a pipe write + thread switch per
-  /// publish): the 1D hybrid's wall/sim fell from 0.091 to 0.058 (400 s, nodelets).
+  /// An output topic (output.hpp: sent only at the stamps some participant reads).
   template <class M>
-  ros::Publisher addOutput(const std::string& topic) {
+  Output addOutput(const std::string& topic) {
     ros::Publisher p = nh_.advertise<M>(topic, 1000);
     outputs_.push_back(p);
-    core_.addOutput(p.getTopic());
-    return p;
+    return Output(p, &core_, core_.addOutput(p.getTopic()));
   }
   /// The YAML file the parameters of this participant came from (param `config_file`).
   std::string configFile() const;

@@ -28,7 +28,7 @@ class ProbeParticipant : public Participant {
 
  private:
   std::vector<Input<hybrid_bus_twin::ProbeSignal>*> inputs_;
-  ros::Publisher pub_;
+  Output pub_;
   double input_sum_ = 0.0;  // sum of the inputs' values[0] read at the last step
 };
 

@@ -42,6 +42,9 @@ std::string Stepper::readParams(core::StepperConfig& cfg) {
   pnh_.param("timeout_s", cfg.timeout_s, 1.0);
   pnh_.param("startup_timeout_s", cfg.startup_timeout_s, 60.0);
   pnh_.param("clock_period_s", cfg.clock_period_s, 0.1);  // /clock for observers: 10 Hz of sim time
+  int window = static_cast<int>(cfg.window_steps);
+  pnh_.param("window_steps", window, window);
+  cfg.window_steps = window < 1 ? 0u : static_cast<uint32_t>(window);  // 0: rejected by validate()
   // participants: the private list if given (hand-written test launches), else the registry
   // /twin/participants/<name> that every participant's launch include writes (one place per
   // participant: launch/include/participant.launch, core.launch for the recorder)
@@ -104,6 +107,7 @@ void Stepper::onStatus(const StepStatus::ConstPtr& m) {
   s.compute_time_s = m->compute_time_s;
   s.message = m->message;
   s.outputs = m->outputs;
+  s.inputs = m->inputs;
   s.observer = m->observer;
   s.mission_duration_s = m->mission_duration_s;
   s.step_multiple = m->step_multiple;
@@ -117,8 +121,9 @@ void Stepper::sendCommand(const core::Command& c) {
   m.header.stamp = fromNanos(c.t);
   m.command = static_cast<uint8_t>(c.command);
   m.step = c.step;
+  m.observer_step = c.observer_step;
+  m.confirmed = c.confirmed;
   m.dt_s = c.dt_s;
-  m.group = c.group;
   m.reason = c.reason;
   m.topics = c.table.topics;
   m.topic_multiple = c.table.topic_multiple;
@@ -126,6 +131,11 @@ void Stepper::sendCommand(const core::Command& c) {
   m.participants = c.table.participants;
   m.participant_multiple = c.table.participant_multiple;
   m.participant_group = c.table.participant_group;
+  m.reader_topic = c.table.reader_topic;
+  m.reader_multiple = c.table.reader_multiple;
+  m.reader_fresh = c.table.reader_fresh;
+  m.window = c.table.window;
+  m.report_wall_s = c.table.report_wall_s;
   cmd_pub_.publish(boost::make_shared<StepCommand>(m));
 }
 

@@ -4,19 +4,23 @@
 // drives the core's wall-clock timeouts with a 50 ms wall timer, prints the progress line, writes
 // `status_file` (JSON: status, message, sim_time_s, wall_time_s, steps, macro_step_s, compute_time_s
 // per node) and shuts ROS down. The run ends at the end of the mission (a participant reports
-// FINISHED), at `until_s`, on an ERROR status, or when a participant does not answer within
-// `timeout_s` (wall clock). The exit status of a run is read from the status file by scripts/twin.
+// FINISHED), at `until_s`, on an ERROR status (at the step that failed), or when no participant
+// progressed within `timeout_s` (wall clock; the silent ones are named). The exit status of a run is read from the status file by scripts/twin.
 //
 // Participants: the private list `participants` if given, else the names registered under
 // /twin/participants/<name> (each participant's launch include registers itself; sorted by name).
 // Parameters (private): participants [list of names, optional], dt_s [s] (base step), until_s [s] (<= 0:
 // mission end), timeout_s [s wall], startup_timeout_s [s wall], status_file [path],
 // progress [bool], order [list of groups, each a list of names (or one name); optional]:
-// Gauss-Seidel groups stepped one after the other within a base step, e.g.
-// [[vehicle], [engine]]; absent = all in one group (Jacobi). Every participant except the
-// recorder must be in exactly one group; the recorder is always stepped last.
-// clock_period_s [s sim, default 0.1; 0 = every base step]: /clock is published at t = 0 and
-// then at most once per this simulated period (observers only: nothing of the protocol reads it).
+// Gauss-Seidel groups, e.g. [[vehicle], [engine]]: a participant reads the fresh value of a
+// producer in an earlier group (so within a base step the groups step one after the other, by
+// their data); absent = all in one group (Jacobi). Every participant except the recorder must be
+// in exactly one group; the recorder is always in the last one.
+// clock_period_s [s sim, default 0.1; 0 = every base step]: /clock is published at t = 0, then
+// (with the time every participant is done through) at most once per this simulated period, and
+// at t_end (observers only: nothing of the protocol reads it).
+// window_steps [base steps, default 10, 1..100000]: the report window W (core/stepper_core.hpp):
+// participants report at every multiple of W and the grants reach 2 W ahead of the slowest.
 #pragma once
 #include <hybrid_bus_twin/StepStatus.h>
 #include <ros/ros.h>

@@ -41,13 +41,19 @@ StepLog FakeParticipant::readAll(Nanos t) const {
 
 void FakeParticipant::publishOutputs(Nanos t) {
   published.push_back(t);
-  for (const auto& topic : outputs)
-    for (FakeInput* in : bus_.subscribers[topic]) bus_.postTopic([in, t] { in->deliver(t, t); });
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const std::string topic = outputs[i];
+    core.publish(i, t, [this, topic, t] {
+      sent[topic].push_back(t);
+      for (FakeInput* in : bus_.subscribers[topic]) bus_.postTopic([in, t] { in->deliver(t, t); });
+    });
+  }
 }
 
 void FakeParticipant::step(Nanos t, double dt_s) {
-  if (faults.throw_at_step >= 0 && static_cast<int64_t>(k_seen) == faults.throw_at_step)
+  if (faults.throw_at_step >= 0 && static_cast<int64_t>(core.next()) == faults.throw_at_step)
     throw std::runtime_error("boom");
+  bus_.wall += faults.step_wall_s;
   StepLog log = readAll(t);
   log.dt_s = dt_s;
   (observer ? records : steps).push_back(log);
@@ -77,17 +83,25 @@ bool FakeParticipant::readyToClose(Nanos t_end) const {
 }
 
 void FakeParticipant::sendStatus(const Status& s) {
+  if (hung) return;
   bus_.post([this, s] { bus_.stepper->onStatus(s, bus_.wall); });
+  // silent_from_step: dies once it has reported it is done below k
+  if (faults.silent_from_step >= 0 && s.status == St::Done &&
+      s.step >= static_cast<uint64_t>(faults.silent_from_step))
+    hung = true;
 }
+
+double FakeParticipant::wallNow() const { return bus_.wall; }
 
 void FakeParticipant::command(const Command& c) {
   if (faults.never_announce || hung) return;
-  if (c.command == Cmd::Step && c.group == core.group() && c.step % core.multiple() == 0) {
-    k_seen = c.step;
-    if (faults.silent_from_step >= 0 && static_cast<int64_t>(c.step) >= faults.silent_from_step) {
-      hung = true;
-      return;
-    }
+  const auto silent = static_cast<uint64_t>(faults.silent_from_step);
+  if (c.command == Cmd::Grant && faults.silent_from_step >= 0 &&
+      (observer ? c.observer_step : c.step) > silent) {
+    Command clamped = c;  // steps what it can below k, then hangs there for good
+    clamped.step = clamped.observer_step = silent;
+    core.onCommand(clamped);
+    return;
   }
   core.onCommand(c);
 }

@@ -44,7 +44,8 @@ struct Faults {
   bool never_announce = false;        // never starts: no ANNOUNCE, no answers
   std::string missing_links;          // answered to every SYNC (links never ready)
   int64_t throw_at_step = -1;         // step() throws at this k
-  int64_t silent_from_step = -1;      // ignores every command from this STEP k on (hung)
+  int64_t silent_from_step = -1;      // steps nothing from this base step k on, answers nothing (hung)
+  double step_wall_s = 0.0;           // every step() takes this long [s of the simulated wall]
   double finish_at_s = -1.0;          // finished() once t >= this
   bool never_ready_to_close = false;  // readyToClose() false forever
 };
@@ -65,12 +66,12 @@ class FakeParticipant : public ParticipantHooks {
   Faults faults;
   std::vector<StepLog> steps;
   std::vector<Nanos> published;     // stamps of publishOutputs
+  std::map<std::string, std::vector<Nanos>> sent;  // topic -> stamps actually sent (read by someone)
   std::vector<Nanos> closed_at;     // close(t_end)
   std::vector<bool> closed_aborted;
   std::vector<StepLog> records;     // observer: what was written (step or close)
   std::function<void(ParticipantCore&)> on_configure;
   bool observer = false;
-  uint64_t k_seen = 0;
   bool hung = false;
   mutable int close_waits = 0;  // readyToClose() answered false
 
@@ -88,6 +89,7 @@ class FakeParticipant : public ParticipantHooks {
   std::vector<std::vector<std::string>> announced_tables;  // topics of each SYNC seen
   void sendStatus(const Status& s) override;
   void logError(const std::string&) override {}
+  double wallNow() const override;
   void command(const Command& c);
 
  private:

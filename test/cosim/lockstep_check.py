@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """rostest node: watches /mass_a/state, /mass_b/state and /sim/status while the oscillator
 scenario runs and checks the lock-step contract: every macro-step stamp appears exactly once per
-topic and in order (no step lost or repeated, t = 0 included), no participant reports a step
-before the previous one, and the state follows the exact two-mass solution."""
+topic and in order (no step lost or repeated, t = 0 included: each mass reads the other's state
+at every step, so every stamp is sent), every participant's DONE reports move forward, and the
+state follows the exact two-mass solution."""
 import math
 import threading
 import unittest
@@ -36,8 +37,8 @@ class LockStep(unittest.TestCase):
             if s.status == StepStatus.DONE:
                 with lock:
                     prev = last_done.get(s.node)
-                    if prev is not None and s.step != prev + 1:
-                        errors.append("%s reported step %d after %d" % (s.node, s.step, prev))
+                    if prev is not None and s.step <= prev:
+                        errors.append("%s reported done through step %d after %d" % (s.node, s.step, prev))
                     last_done[s.node] = s.step
 
         subs = [rospy.Subscriber(t, ProbeSignal, on_state(t), queue_size=10000) for t in stamps]

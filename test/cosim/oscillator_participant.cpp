@@ -62,7 +62,7 @@ class Oscillator : public cosim::Participant {
 
  private:
   cosim::Input<hybrid_bus_twin::ProbeSignal>* peer_ = nullptr;
-  ros::Publisher pub_;
+  cosim::Output pub_;
   double x_ = 0.0, v_ = 0.0, m_ = 1.0, k_ = 100.0, kc_ = 20.0, t_ = 0.0, finish_after_s_ = 0.0;
   int substeps_ = 10;
 };

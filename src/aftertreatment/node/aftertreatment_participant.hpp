@@ -48,7 +48,7 @@ class AftertreatmentParticipant : public cosim::Participant {
   AtsParams params_;
   cosim::Input<hybrid_bus_twin::ExhaustState>* exhaust_ = nullptr;
   cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
-  ros::Publisher state_pub_;
+  cosim::Output state_pub_;
   double ambient_T_K_ = 298.15;
   double ambient_p_Pa_ = units::kStandardAtmosphere_Pa;  // tailpipe pressure, /scenario/ambient_pressure_pa
   long cvode_steps_at_status_ = 0;  // SCR solver steps counted at the last status

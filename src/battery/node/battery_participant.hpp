@@ -45,7 +45,7 @@ class BatteryParticipant : public cosim::Participant {
   std::unique_ptr<BatteryModel> model_;
   cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;
   cosim::Input<hybrid_bus_twin::VehicleState>* vehicle_ = nullptr;  // DC/DC load of the 24 V consumers
-  ros::Publisher state_pub_;
+  cosim::Output state_pub_;
   double ambient_T_K_ = 298.15, dcdc_power_W_ = 0.0;  // last step's DC/DC load [W]
   cosim::core::Warning* limited_ = nullptr;
 };

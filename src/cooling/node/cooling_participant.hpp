@@ -43,7 +43,7 @@ class CoolingParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::EngineHeat>* heat_ = nullptr;
   cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
   cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;  // loops/ems (hybrid) only
-  ros::Publisher state_pub_;
+  cosim::Output state_pub_;
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = units::kStandardAtmosphere_Pa;
   CoolingInputs last_in_;
   bool started_ = false;                                       // a step was taken

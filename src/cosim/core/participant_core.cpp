@@ -2,8 +2,9 @@
 
 #include <chrono>
 
-#include <ctime>
+#include <algorithm>
 #include <exception>
+#include <iomanip>
 #include <sstream>
 
 #include "common/errors.hpp"
@@ -17,7 +18,20 @@ namespace {
 double monotonicNow() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
+
+std::string seconds(Nanos t) {
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(3) << toSec(t) << " s";
+  return os.str();
+}
 }  // namespace
+
+double ParticipantHooks::wallNow() const { return monotonicNow(); }
+
+std::size_t ParticipantCore::addOutput(const std::string& resolved_topic) {
+  outputs_.push_back(Output{resolved_topic, {}, {}});
+  return outputs_.size() - 1;
+}
 
 void ParticipantCore::start() {
   try {
@@ -65,7 +79,7 @@ void ParticipantCore::fail(const std::string& what) {
   failed_ = true;
   error_ = name_ + ": " + what;
   h_.logError(error_);
-  report(St::Error, k_pending_, t_pending_, error_);
+  report(St::Error, n_, static_cast<Nanos>(n_) * base_ns_, error_);
 }
 
 void ParticipantCore::report(St status, uint64_t step, Nanos t, const std::string& msg) {
@@ -76,8 +90,11 @@ void ParticipantCore::report(St status, uint64_t step, Nanos t, const std::strin
   s.t = t;
   s.compute_time_s = compute_s_;
   s.message = msg;
+  if (status == St::Announce || status == St::Ready) {
+    for (const InputPort* in : inputs_) s.inputs.push_back(in->resolvedTopic());
+  }
   if (status == St::Announce) {
-    s.outputs = outputs_;
+    for (const Output& o : outputs_) s.outputs.push_back(o.topic);
     s.observer = observer_;
     s.mission_duration_s = mission_duration_s_;
   }
@@ -87,7 +104,7 @@ void ParticipantCore::report(St status, uint64_t step, Nanos t, const std::strin
 
 bool ParticipantCore::onAnnounceTick() {
   if (closed_ || started_) return false;
-  if (failed_) report(St::Error, k_pending_, t_pending_, error_);
+  if (failed_) report(St::Error, 0, 0, error_);
   else if (configured_) report(St::Announce, 0, 0);
   return true;
 }
@@ -106,6 +123,58 @@ void ParticipantCore::applyTable(const Table& tb) {
     }
     in->setRule(r);
   }
+  for (Output& o : outputs_) {
+    o.readers.clear();
+    for (std::size_t j = 0; j < tb.reader_topic.size(); ++j) {
+      const uint32_t i = tb.reader_topic[j];
+      if (i < tb.topics.size() && tb.topics[i] == o.topic && j < tb.reader_multiple.size() &&
+          j < tb.reader_fresh.size())
+        o.readers.push_back(Reader{tb.reader_multiple[j], tb.reader_fresh[j] != 0});
+    }
+  }
+  window_ = std::max<uint32_t>(1, tb.window);
+  report_wall_s_ = tb.report_wall_s;
+}
+
+bool ParticipantCore::outputRead(std::size_t index, Nanos stamp) const {
+  if (!started_ || base_ns_ <= 0 || index >= outputs_.size()) return true;
+  const uint64_t s = static_cast<uint64_t>(stamp / base_ns_);
+  for (const Reader& r : outputs_[index].readers)
+    if (readsStamp(multiple_, r.multiple, r.fresh, s)) return true;
+  return false;
+}
+
+void ParticipantCore::publish(std::size_t index, Nanos stamp, std::function<void()> send) {
+  if (outputRead(index, stamp)) {
+    ++sent_;
+    send();
+    return;
+  }
+  ++deferred_;
+  outputs_[index].kept.push_back(Kept{static_cast<uint64_t>(stamp / base_ns_), std::move(send)});
+}
+
+void ParticipantCore::trimKept(uint64_t confirmed) {
+  // the run ends at a step >= confirmed: an observer reads stamp floor(k_end / m) * m at the end
+  const uint64_t keep_from = confirmed / multiple_ * multiple_;
+  for (Output& o : outputs_)
+    while (!o.kept.empty() && o.kept.front().s < keep_from) o.kept.pop_front();
+}
+
+void ParticipantCore::sendKeptAt(uint64_t k_end) {
+  const uint64_t s_end = k_end / multiple_ * multiple_;
+  for (Output& o : outputs_)
+    for (auto it = o.kept.begin(); it != o.kept.end(); ++it)
+      if (it->s == s_end) {
+        try {
+          ++sent_;
+          it->send();
+        } catch (const std::exception& e) {
+          h_.logError(name_ + ": publishing the final outputs failed: " + e.what());
+        }
+        o.kept.erase(it);
+        break;
+      }
 }
 
 void ParticipantCore::onCommand(const Command& c) {
@@ -125,29 +194,32 @@ void ParticipantCore::onCommand(const Command& c) {
       return;
     }
     case Cmd::Start:
-      if (failed_) { report(St::Error, c.step, 0, error_); return; }
+      if (failed_) { report(St::Error, 0, 0, error_); return; }
       if (!configured_ || started_ || !checkPeriod(c.dt_s)) return;
       started_ = true;
       applyTable(c.table);
+      last_report_wall_ = h_.wallNow();
       try {
         h_.publishOutputs(0);  // the state at t_0, before anyone steps
       } catch (const std::exception& e) {
         fail(std::string("publishing the initial outputs failed: ") + e.what());
       }
       return;
-    case Cmd::Step:
-      if (failed_) { report(St::Error, c.step, c.t, error_); return; }
-      if (!started_ || c.group != group_ || c.step % multiple_ != 0) return;
-      pending_ = true;
-      k_pending_ = c.step;
-      t_pending_ = c.t;
+    case Cmd::Grant:
+      if (!started_ || failed_) return;
+      horizon_ = observer_ ? c.observer_step : c.step;
+      trimKept(c.confirmed);
       tryStep();
       return;
+    case Cmd::Query:
+      if (!started_) return;
+      report(St::Waiting, n_, static_cast<Nanos>(n_) * base_ns_, describeWait());
+      return;
     case Cmd::Finish:
-      pending_ = false;
       closing_ = true;
       t_close_ = c.t;
       k_close_ = c.step;
+      if (started_) sendKeptAt(c.step);
       tryClose();
       return;
     case Cmd::Abort:
@@ -157,10 +229,21 @@ void ParticipantCore::onCommand(const Command& c) {
         h_.logError(name_ + ": closing failed: " + e.what());
       }
       closed_ = true;
-      pending_ = false;
       report(St::Closed, c.step, c.t, c.reason);
       return;
   }
+}
+
+std::string ParticipantCore::describeWait() const {
+  const Nanos t = static_cast<Nanos>(n_) * base_ns_;
+  if (failed_) return "failed: " + error_;
+  if (finished_) return "finished at t = " + seconds(t);
+  if (n_ >= horizon_) return "done through t = " + seconds(t) + ", waiting for a grant";
+  std::string w;
+  for (const InputPort* in : inputs_)
+    if (!in->readyFor(t))
+      w += (w.empty() ? "" : ", ") + in->resolvedTopic() + " stamped " + seconds(in->stampFor(t));
+  return "step " + std::to_string(n_) + " (t = " + seconds(t) + ") waits for " + (w.empty() ? "nothing" : w);
 }
 
 void ParticipantCore::onArrival() { tryStep(); }
@@ -177,27 +260,46 @@ void ParticipantCore::tryClose() {
   report(St::Closed, k_close_, t_close_);
 }
 
+void ParticipantCore::reportProgress(bool force) {
+  const bool boundary = n_ / window_ > reported_ / window_;
+  const bool granted_done = n_ >= horizon_ && reported_ < horizon_;
+  if (!(force || boundary || granted_done)) {
+    if (n_ <= reported_ || h_.wallNow() - last_report_wall_ < report_wall_s_) return;
+  }
+  reported_ = n_;
+  last_report_wall_ = h_.wallNow();
+  report(St::Done, n_, static_cast<Nanos>(n_) * base_ns_);
+}
+
 void ParticipantCore::tryStep() {
   if (closing_) { tryClose(); return; }
-  if (!pending_ || failed_ || closed_) return;
-  const Nanos t = t_pending_;
-  for (const InputPort* in : inputs_)
-    if (!in->readyFor(t)) return;  // wait for the inputs held at t_k
-  pending_ = false;
-  const Nanos t_next = t + period_ns_;
-  try {
-    const double c0 = monotonicNow();
-    h_.step(t, dt_s_);
-    compute_s_ += monotonicNow() - c0;
-    h_.publishOutputs(t_next);
-  } catch (const std::exception& e) {
-    fail("step " + std::to_string(k_pending_) + " (t = " + std::to_string(t * 1e-9) +
-         " s) failed: " + e.what());
-    return;
+  if (!started_ || failed_ || closed_ || finished_) return;
+  while (n_ < horizon_) {
+    const Nanos t = static_cast<Nanos>(n_) * base_ns_;
+    for (const InputPort* in : inputs_)
+      if (!in->readyFor(t)) return;  // wait for the inputs held at t_n
+    const Nanos t_next = t + period_ns_;
+    try {
+      const double c0 = monotonicNow();
+      h_.step(t, dt_s_);
+      compute_s_ += monotonicNow() - c0;
+      h_.publishOutputs(t_next);
+    } catch (const std::exception& e) {
+      fail("step " + std::to_string(n_) + " (t = " + std::to_string(t * 1e-9) + " s) failed: " + e.what());
+      return;
+    }
+    // keep what a later step or the close at t_end >= t_n + base step may still read
+    for (InputPort* in : inputs_) in->dropStampsBefore(in->stampFor(t + base_ns_));
+    n_ += multiple_;
+    if (h_.finished()) {
+      finished_ = true;
+      reported_ = n_;
+      report(St::Finished, n_, t_next);
+      return;
+    }
+    reportProgress(false);
   }
-  // keep what a later step or the close at t_end >= t_k + base step may still read
-  for (InputPort* in : inputs_) in->dropStampsBefore(in->stampFor(t + base_ns_));
-  report(h_.finished() ? St::Finished : St::Done, k_pending_, t_next);
+  reportProgress(false);  // everything granted done (also when a grant shrank below n)
 }
 
 }  // namespace hbt::cosim::core

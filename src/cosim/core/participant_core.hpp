@@ -3,21 +3,33 @@
 //
 //   start()          configure() through the hooks, then validate the macro step request
 //                    (errors -> ERROR status "name: ..." naming file and key)
-//   onAnnounceTick() every 100 ms wall until START: ANNOUNCE(outputs, observer, mission duration),
-//                    or ERROR again while failed
+//   onAnnounceTick() every 100 ms wall until START: ANNOUNCE(outputs, inputs, observer, mission
+//                    duration), or ERROR again while failed
 //   SYNC r           checks the period against the base step (must be an integer multiple), asks
-//                    the hooks for missing links: READY(r, step_multiple) or WAITING(r, links)
+//                    the hooks for missing links: READY(r, step_multiple, inputs) or WAITING(r, links)
 //   START            takes the table: own group, each input's held-value rule (HeldRule, from its
-//                    producer's period and group); publishes the outputs stamped t_0
-//   STEP k, group g  ignored unless g is this participant's group and k % multiple == 0; then waits
-//                    (event driven: onArrival) until every input has the message stamped
-//                    rule.stampFor(t_k), calls step(t_k, period), publishes outputs stamped
-//                    t_k + period, drops messages older than stampFor(t_k + base step) and answers
-//                    DONE(k) (FINISHED(k) if finished())
-//   FINISH           close(t_end, false) once readyToClose(t_end); CLOSED
+//                    producer's period and group), each output's readers, the report window W;
+//                    publishes the outputs stamped t_0
+//   GRANT K          steps, data-driven, every due base step n < K (n % multiple == 0; observers
+//                    use their own horizon): as soon as every input has the message stamped
+//                    rule.stampFor(t_n) it calls step(t_n, period), publishes outputs stamped
+//                    t_n + period, drops messages older than stampFor(t_n + base step) and moves
+//                    on to n + multiple. It reports DONE(n) when it passed a multiple of W, when it
+//                    did all it was granted, or when report_wall_s passed since its last report;
+//                    FINISHED(n) when finished() says it reached the end of its input (then it
+//                    steps no more).
+//   QUERY            WAITING(n, what it waits for: which input at which stamp, or the grant)
+//   FINISH k_end     publishes the deferred outputs an observer reads at t_end, then
+//                    close(t_end, false) once readyToClose(t_end); CLOSED
 //   ABORT            close(t_end, true) at once; CLOSED
+// Outputs: publish(output, stamp, send) sends a message only if some participant of the run
+// reads that stamp (readsStamp() over the output's readers from the START table); the others
+// are kept until the end of the run can no longer be at their stamp (GRANT's L), because the
+// observers read every topic at t_end.
 // Any exception of the model becomes ERROR "name: step k (t = ...) failed: what".
 #pragma once
+#include <deque>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,6 +72,8 @@ class ParticipantHooks {
                                const std::vector<std::string>& participants) {}
   virtual void sendStatus(const Status& s) = 0;
   virtual void logError(const std::string& msg) = 0;
+  /// Wall clock [s] for the report period (tests drive a simulated one).
+  virtual double wallNow() const;
 };
 
 /// Requested macro step: 0 = the base step. `where`/`key` name its source for errors.
@@ -77,13 +91,21 @@ class ParticipantCore {
 
   // --- declarations, during configure() ---
   void addInput(InputPort* in) { inputs_.push_back(in); }
-  void addOutput(const std::string& resolved_topic) { outputs_.push_back(resolved_topic); }
+  /// Declares an output topic; returns its index for publish().
+  std::size_t addOutput(const std::string& resolved_topic);
   void requestPeriod(PeriodRequest r) {
     period_req_ = std::move(r);
     period_given_ = true;
   }
   void setObserver(bool o) { observer_ = o; }
   void setMissionDuration(double s) { mission_duration_s_ = s; }
+
+  // --- publishing (from publishOutputs) ---
+  /// Sends output `index` stamped `stamp` now (send()) if a reader reads that stamp, else keeps
+  /// send() until the end of the run is known (an observer may read it at t_end).
+  void publish(std::size_t index, Nanos stamp, std::function<void()> send);
+  /// True if a reader of the run reads output `index` stamped `stamp` (always true before START).
+  bool outputRead(std::size_t index, Nanos stamp) const;
 
   // --- events ---
   void start();
@@ -99,32 +121,58 @@ class ParticipantCore {
   bool started() const { return started_; }
   uint32_t multiple() const { return multiple_; }
   uint32_t group() const { return group_; }
+  /// n: every due base step below it is done.
+  uint64_t next() const { return n_; }
   double computeSeconds() const { return compute_s_; }  // in configure() and step() [s, steady clock]
   const std::vector<InputPort*>& inputs() const { return inputs_; }
+  /// Messages published / kept back (deferred) so far, over all outputs.
+  uint64_t sent() const { return sent_; }
+  uint64_t deferred() const { return deferred_; }
 
  private:
+  struct Reader {
+    uint32_t multiple = 1;
+    bool fresh = false;
+  };
+  struct Kept {
+    uint64_t s;  // base step of the stamp
+    std::function<void()> send;
+  };
+  struct Output {
+    std::string topic;
+    std::vector<Reader> readers;
+    std::deque<Kept> kept;
+  };
+
   void fail(const std::string& what);
   void report(St status, uint64_t step, Nanos t, const std::string& msg = "");
+  void reportProgress(bool force);
   bool checkPeriod(double base_dt_s);
   void applyTable(const Table& table);
   void tryStep();
   void tryClose();
+  void trimKept(uint64_t confirmed);
+  void sendKeptAt(uint64_t k_end);
+  std::string describeWait() const;
 
   std::string name_;
   ParticipantHooks& h_;
   std::vector<InputPort*> inputs_;
-  std::vector<std::string> outputs_;
+  std::vector<Output> outputs_;
   PeriodRequest period_req_;
   bool observer_ = false;
   double mission_duration_s_ = 0.0;
 
   bool configured_ = false, failed_ = false, started_ = false, closed_ = false;
-  bool pending_ = false, closing_ = false, period_given_ = false;
-  uint32_t multiple_ = 1, group_ = 0;
+  bool closing_ = false, finished_ = false, period_given_ = false;
+  uint32_t multiple_ = 1, group_ = 0, window_ = 1;
   double base_dt_s_ = 0.0, dt_s_ = 0.0;  // base step, own macro step [s]
+  double report_wall_s_ = 0.25, last_report_wall_ = 0.0;
   Nanos base_ns_ = 0, period_ns_ = 0;
-  Nanos t_pending_ = 0, t_close_ = 0;
-  uint64_t k_pending_ = 0, k_close_ = 0;
+  uint64_t n_ = 0, horizon_ = 0, reported_ = 0;
+  Nanos t_close_ = 0;
+  uint64_t k_close_ = 0;
+  uint64_t sent_ = 0, deferred_ = 0;
   double compute_s_ = 0.0;
   std::string error_;
 };

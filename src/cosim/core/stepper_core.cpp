@@ -1,11 +1,19 @@
 #include "cosim/core/stepper_core.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <set>
 #include <sstream>
 
 namespace hbt::cosim::core {
+namespace {
+std::string seconds(Nanos t) {
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(3) << toSec(t) << " s";
+  return os.str();
+}
+}  // namespace
 
 std::string validate(const StepperConfig& c) {
   const std::string w = c.where + ": key ";
@@ -17,6 +25,7 @@ std::string validate(const StepperConfig& c) {
   if (!(c.timeout_s > 0.0) || !(c.startup_timeout_s > 0.0)) return w + "'timeout_s': must be > 0";
   if (std::isnan(c.until_s)) return w + "'until_s': NaN";
   if (!(c.clock_period_s >= 0.0 && c.clock_period_s <= 3600.0)) return w + "'clock_period_s': must be in [0, 3600] s";
+  if (c.window_steps < 1 || c.window_steps > 100000) return w + "'window_steps': must be in [1, 100000] base steps";
   std::set<std::string> seen;
   for (std::size_t g = 0; g < c.order.size(); ++g) {
     if (c.order[g].empty()) return w + "'order': group " + std::to_string(g + 1) + " is empty";
@@ -33,6 +42,10 @@ StepperCore::StepperCore(StepperConfig cfg, StepperTransport& tr) : cfg_(std::mo
   dt_ns_ = toNanos(cfg_.dt_s);
   clock_period_ns_ = toNanos(cfg_.clock_period_s);
   for (const auto& n : cfg_.participants) peers_[n] = Peer{};
+  if (cfg_.until_s > 0.0 && dt_ns_ > 0) {  // first k with t_k >= until_s (1 ns tolerance)
+    const Nanos u = toNanos(cfg_.until_s) - 1;
+    end_until_ = std::max<uint64_t>(1, static_cast<uint64_t>((u + dt_ns_ - 1) / dt_ns_));
+  }
 }
 
 double StepperCore::missionDuration_s() const {
@@ -97,16 +110,14 @@ void StepperCore::onStatus(const Status& s, double wall_s) {
   if (it == peers_.end()) return;  // not a participant of this run
   Peer& p = it->second;
   p.compute_s = s.compute_time_s;
-  if (s.status == St::Error) {
-    if (phase_ != Phase::Closing && phase_ != Phase::Done) finish(true, s.message, wall_s);
-    return;
-  }
   switch (phase_) {
     case Phase::Announce:
     case Phase::Sync:
+      if (s.status == St::Error) { finish(true, s.message, wall_s); return; }
       p.announced = true;
       if (s.status == St::Announce) {
         p.outputs = s.outputs;
+        p.inputs = s.inputs;
         p.observer = s.observer;
         p.mission_duration_s = s.mission_duration_s;
       } else if (s.status == St::Ready || s.status == St::Waiting) {
@@ -115,17 +126,41 @@ void StepperCore::onStatus(const Status& s, double wall_s) {
         p.last_step = s.step;
         p.waiting_for = s.message;
         p.multiple = s.step_multiple < 1 ? 1 : s.step_multiple;
+        if (s.status == St::Ready) p.inputs = s.inputs;
       }
       return;
     case Phase::Stepping:
-      if ((s.status == St::Done || s.status == St::Finished) && s.step == k_ && p.due && !p.done) {
-        p.done = true;
-        if (s.status == St::Finished) finished_seen_ = true;
-        for (const auto& n : groups_[group_])
-          if (peers_[n].due && !peers_[n].done) return;
-        ++group_;
-        commandNextGroup(wall_s);
+      if (s.status == St::Waiting) {  // answer to a QUERY: where it is (not progress: no reset)
+        p.answered = true;
+        p.waiting_for = s.message;
+        if (s.step > p.next) {
+          p.next = s.step;
+          update(wall_s);
+        }
+        return;
       }
+      if (s.status != St::Done && s.status != St::Finished && s.status != St::Error) return;
+      last_progress_ = wall_s;
+      query_sent_ = false;
+      if (s.status == St::Error) {
+        p.failed = true;
+        p.error = s.message;
+        p.next = std::max(p.next, s.step);
+        if (s.step < end_error_) {
+          end_error_ = s.step;
+          error_reason_ = s.message;
+        }
+      } else {
+        p.next = std::max(p.next, s.step);
+        if (s.status == St::Finished) {  // after its step n - multiple
+          const uint64_t k_f = s.step >= p.multiple ? s.step - p.multiple : 0;
+          if (k_f + 1 < end_finished_) {
+            end_finished_ = k_f + 1;
+            finished_by_ = s.node;
+          }
+        }
+      }
+      update(wall_s);
       return;
     case Phase::Closing:
       if (s.status == St::Closed) {
@@ -144,7 +179,7 @@ void StepperCore::sendSync() {
   c.command = Cmd::Sync;
   c.step = sync_round_;
   c.dt_s = cfg_.dt_s;
-  fillTable(c.table);  // everyone has announced: observers learn the topics to read from it
+  fillTable(c.table, false);  // everyone has announced: observers learn the topics to read from it
   tr_.sendCommand(c);
 }
 
@@ -152,60 +187,91 @@ void StepperCore::sendStart() {
   Command c;
   c.command = Cmd::Start;
   c.dt_s = cfg_.dt_s;
-  fillTable(c.table);
+  fillTable(c.table, true);
   tr_.sendCommand(c);
 }
 
-void StepperCore::fillTable(Table& table) const {
-  Table& t = table;
+void StepperCore::fillTable(Table& t, bool readers) const {
+  std::map<std::string, std::size_t> index;
   for (const auto& n : cfg_.participants) {
     const Peer& p = peers_.at(n);
     t.participants.push_back(n);
     t.participant_multiple.push_back(p.multiple);
     t.participant_group.push_back(p.group);
     for (const auto& topic : p.outputs) {
+      index[topic] = t.topics.size();
       t.topics.push_back(topic);
       t.topic_multiple.push_back(p.multiple);
       t.topic_group.push_back(p.group);
     }
   }
-}
-
-void StepperCore::beginStep(double wall_s) {
-  clockAt(t_);
-  group_ = 0;
-  finished_seen_ = false;
-  commandNextGroup(wall_s);
-}
-
-void StepperCore::commandNextGroup(double wall_s) {
-  for (; group_ < groups_.size(); ++group_) {
-    bool any = false;
-    for (const auto& n : groups_[group_]) {
-      Peer& p = peers_[n];
-      p.due = k_ % p.multiple == 0;
-      p.done = false;
-      any = any || p.due;
+  t.window = cfg_.window_steps;
+  t.report_wall_s = cfg_.timeout_s / 4.0;
+  if (!readers) return;
+  for (const auto& n : cfg_.participants) {
+    const Peer& c = peers_.at(n);
+    for (const auto& topic : c.inputs) {
+      const auto it = index.find(topic);
+      if (it == index.end()) continue;  // no producer in this run: nothing to decimate
+      t.reader_topic.push_back(static_cast<uint32_t>(it->second));
+      t.reader_multiple.push_back(c.multiple);
+      t.reader_fresh.push_back(!c.observer && t.topic_group[it->second] < c.group);
     }
-    if (!any) continue;
-    Command c;
-    c.command = Cmd::Step;
-    c.step = k_;
-    c.t = t_;
-    c.dt_s = cfg_.dt_s;
-    c.group = static_cast<uint32_t>(group_);
-    step_sent_ = wall_s;
-    ++step_commands_;
-    tr_.sendCommand(c);
+  }
+}
+
+uint64_t StepperCore::endStep() const { return std::min({end_until_, end_finished_, end_error_}); }
+
+void StepperCore::update(double wall_s) {
+  if (phase_ != Phase::Stepping) return;
+  uint64_t d = kNever, all = kNever;  // done through: non-observers, everyone
+  for (const auto& kv : peers_) {
+    all = std::min(all, kv.second.next);
+    if (!kv.second.observer) d = std::min(d, kv.second.next);
+  }
+  const uint64_t e = endStep();
+  if (e != kNever && all >= e) {  // the end is committed: nobody can report anything below e
+    k_ = e;
+    t_ = static_cast<Nanos>(e) * dt_ns_;
+    if (last_clock_ < t_) {  // observers see the end time
+      last_clock_ = t_;
+      tr_.publishClock(t_);
+    }
+    const bool by_error = end_error_ == e && end_error_ < std::min(end_until_, end_finished_);
+    for (const auto& kv : peers_)  // failed in a step the lock-step would never have run
+      if (kv.second.failed && !(by_error && kv.second.error == error_reason_))
+        tr_.warn("stepper: ignored, in a step at or after the end of the run (t = " + seconds(t_) +
+                 "): " + kv.second.error);
+    if (by_error) finish(true, error_reason_, wall_s);
+    else if (end_finished_ == e) finish(false, "end of mission", wall_s);
+    else finish(false, "until_s reached", wall_s);
     return;
   }
-  // base step k complete
-  t_ += dt_ns_;
-  ++k_;
-  tr_.progress(false);
-  if (finished_seen_) finish(false, "end of mission", wall_s);
-  else if (cfg_.until_s > 0.0 && toSec(t_) >= cfg_.until_s - 1e-9) finish(false, "until_s reached", wall_s);
-  else beginStep(wall_s);
+  const uint64_t w = cfg_.window_steps;
+  const uint64_t slowest = all == kNever ? 0 : all;
+  const uint64_t h = std::min(slowest / w * w + 2 * w, e);
+  const uint64_t h_obs = std::min(d == kNever ? e : d + 1, e);
+  const uint64_t l = std::min(d == kNever ? slowest : d, e);
+  if (h != horizon_ || h_obs != horizon_obs_) {
+    horizon_ = h;
+    horizon_obs_ = h_obs;
+    confirmed_ = l;
+    Command c;
+    c.command = Cmd::Grant;
+    c.step = h;
+    c.observer_step = h_obs;
+    c.confirmed = l;
+    c.t = static_cast<Nanos>(h) * dt_ns_;
+    c.dt_s = cfg_.dt_s;
+    ++grants_;
+    tr_.sendCommand(c);
+  }
+  if (slowest != k_) {
+    k_ = slowest;
+    t_ = static_cast<Nanos>(slowest) * dt_ns_;
+    clockAt(t_);
+    tr_.progress(false);
+  }
 }
 
 void StepperCore::onTick(double wall_s) {
@@ -237,27 +303,26 @@ void StepperCore::onTick(double wall_s) {
       }
       if (!all_ready) { sendSync(); return; }
       phase_ = Phase::Stepping;
-      wall0_ = wall_s;
+      wall0_ = last_progress_ = wall_s;
       k_ = 0;
       t_ = 0;
+      for (auto& kv : peers_) kv.second.waiting_for.clear();
       sendStart();
-      beginStep(wall_s);
+      update(wall_s);
       return;
     }
     case Phase::Stepping:
-      if (wall_s - step_sent_ > cfg_.timeout_s) {
-        std::string m;
-        for (const auto& n : groups_[group_]) {
-          Peer& p = peers_[n];
-          if (p.due && !p.done) m += (m.empty() ? "" : ", ") + n;
-        }
-        for (auto& kv : peers_)  // silent participants will not close anything: do not wait
-          if (kv.second.due && !kv.second.done) kv.second.closed = true;
-        std::ostringstream os;
-        os << "participant(s) " << m << " did not answer step " << k_ << " (t = " << std::fixed
-           << std::setprecision(3) << toSec(t_) << " s) within " << std::defaultfloat
-           << cfg_.timeout_s << " s: node died or hung";
-        finish(true, os.str(), wall_s);
+      if (wall_s - last_progress_ > cfg_.timeout_s) {
+        timeout(wall_s);
+      } else if (wall_s - last_progress_ > 0.5 * cfg_.timeout_s && !query_sent_) {
+        query_sent_ = true;
+        for (auto& kv : peers_) kv.second.answered = false;
+        Command c;
+        c.command = Cmd::Query;
+        c.step = k_;
+        c.t = t_;
+        c.dt_s = cfg_.dt_s;
+        tr_.sendCommand(c);
       }
       return;
     case Phase::Closing:
@@ -269,6 +334,31 @@ void StepperCore::onTick(double wall_s) {
     case Phase::Done:
       return;
   }
+}
+
+void StepperCore::timeout(double wall_s) {
+  std::string silent, waits;
+  const uint64_t e = endStep();
+  for (const auto& n : cfg_.participants) {
+    Peer& p = peers_[n];
+    if (p.next >= e) continue;  // done: nothing to wait for
+    if (query_sent_ && p.answered) {
+      if (!p.waiting_for.empty()) waits += "; " + n + ": " + p.waiting_for;
+    } else {
+      silent += (silent.empty() ? "" : ", ") + n + " (done through t = " +
+                seconds(static_cast<Nanos>(p.next) * dt_ns_) + ")";
+      p.closed = true;  // silent participants will not close anything: do not wait
+    }
+  }
+  std::ostringstream os;
+  os << std::defaultfloat;
+  if (!silent.empty())
+    os << "participant(s) " << silent << " did not answer within " << cfg_.timeout_s
+       << " s: node died or hung";
+  else
+    os << "no participant progressed for " << cfg_.timeout_s << " s (done through t = " << seconds(t_) << ")";
+  os << waits;
+  finish(true, os.str(), wall_s);
 }
 
 void StepperCore::finish(bool aborted, const std::string& reason, double wall_s) {

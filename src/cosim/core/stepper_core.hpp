@@ -2,28 +2,43 @@
 // cosim::Stepper (../stepper.hpp) owns one and only translates messages, timers and files.
 //
 // Phases: Announce -> Sync -> Stepping -> Closing -> Done.
-//  Announce  waits for an ANNOUNCE of every participant (outputs, observer flag, mission duration);
-//            then builds the groups from `order` (default: one group = Jacobi); observers (the
-//            recorder) always go into the last group. A participant missing from `order` or a
-//            topic published by two participants ABORTs the run here, before step 0.
+//  Announce  waits for an ANNOUNCE of every participant (outputs, inputs, observer flag, mission
+//            duration); then builds the groups from `order` (default: one group = Jacobi);
+//            observers (the recorder) always go into the last group. A participant missing from
+//            `order` or a topic published by two participants ABORTs the run here, before step 0.
 //  Sync      SYNC rounds until one round in which every participant answered READY (with its
-//            step multiple); then START with the table (topic -> producer multiple and group,
-//            participant -> multiple and group) and step 0. Each SYNC carries the table as
-//            known so far: its topics are final (everyone has announced), so an observer that
-//            records "everything" (the recorder without a topic list) subscribes from it and
-//            answers WAITING until connected; multiples and groups are final only in START.
-//  Stepping  base step k (t_k = k * dt): /clock t_k, then for each group in order the STEP(k, g)
-//            to its participants due at k (k % multiple == 0), waiting for all their DONE(k) or
-//            FINISHED(k) before the next group. After the last group: t_{k+1}; the run ends with
-//            FINISH when someone reported FINISHED in step k (the only end-of-mission signal) or
-//            t_{k+1} >= until_s (> 0).
+//            step multiple and final inputs); then START with the table (topic -> producer
+//            multiple and group, participant -> multiple and group, readers of each topic, the
+//            report window W) and the first GRANT. Each SYNC carries the table as known so far:
+//            its topics are final (everyone has announced), so an observer that records
+//            "everything" (the recorder without a topic list) subscribes from it and answers
+//            WAITING until connected; multiples, groups and readers are final only in START.
+//  Stepping  The stepper is not in the loop of every base step: it GRANTs horizons and the
+//            participants step on their data (participant_core.hpp). Let n_p be what p reported
+//            done (every due step below n_p), D = min n_p over the non-observers, E the end as
+//            known so far: min(E_until = first k with t_k >= until_s, k_f + 1 for the first
+//            FINISHED after step k_f, k_e for the first ERROR in step k_e). Grants:
+//              K     = min(floor(min_all n / W)·W + 2W, E)   non-observers (at most 2W ahead
+//                                                            of the slowest, the recorder included)
+//              K_obs = min(D + 1, E)                         observers: never beyond a step that
+//                                                            may lie past the end
+//              L     = min(D, E)                             the end is never before L
+//            A grant may shrink (a FINISHED or an ERROR lowers E). The end is committed when every
+//            participant reported n_p >= E -- nobody can still report a FINISHED or an ERROR
+//            below E, since each participant's statuses arrive in order -- then FINISH at t_E, or
+//            ABORT when E is an error's step (an ERROR in a step at or after the end of the run,
+//            which the old lock-step would never have run, is a warning). So the run ends at the
+//            same step, with the same states, whatever the timing; every participant can reach
+//            E without the failed one (its outputs up to t_{k_e} were published).
 //  Closing   FINISH/ABORT sent; waits for CLOSED from all (0.7 s wall after ABORT, 5 s after
-//            FINISH; silent participants of a step timeout are not waited for), then Done.
-// Abort paths: an ERROR status (any phase before Closing), start-up timeout (someone never
-// announces or links never ready within startup_timeout_s), step timeout (a participant due in
-// the current group does not answer within timeout_s). Wall time comes from the caller
-// (onStatus/onTick arguments), so tests drive a simulated wall clock.
+//            FINISH; participants silent at a step timeout are not waited for), then Done.
+// Abort paths: an ERROR status (Announce/Sync: at once; Stepping: at its step, see above),
+// start-up timeout (someone never announces or links never ready within startup_timeout_s), step
+// timeout (no participant reported progress for timeout_s: at timeout_s / 2 a QUERY asks everyone
+// what it waits for; the ones that did not answer are named as died or hung). Wall time comes
+// from the caller (onStatus/onTick arguments), so tests drive a simulated wall clock.
 #pragma once
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -40,11 +55,13 @@ struct StepperConfig {
   /// is for observers only (rviz, log stamps, rosbag tools), nothing of the protocol reads it,
   /// and every ROS process with use_sim_time receives each message.
   double clock_period_s = 0.0;
+  /// W [base steps]: participants report at every multiple of W; grants reach 2W ahead.
+  uint32_t window_steps = 10;
   std::string where = "stepper parameters (launch file)";
 };
 
 /// "" if valid, else the error naming `where` and the key (participants, dt_s, timeout_s,
-/// until_s, order: unknown name, duplicate, empty group).
+/// until_s, clock_period_s, window_steps, order: unknown name, duplicate, empty group).
 std::string validate(const StepperConfig& c);
 
 class StepperTransport {
@@ -52,7 +69,7 @@ class StepperTransport {
   virtual ~StepperTransport() = default;
   virtual void sendCommand(const Command& c) = 0;
   virtual void publishClock(Nanos t) = 0;
-  /// After each base step (force = false) and once when the run ends (force = true).
+  /// After progress (force = false) and once when the run ends (force = true).
   virtual void progress(bool force) {}
   virtual void runEnded(bool aborted, const std::string& reason) {}
   virtual void warn(const std::string& msg) {}
@@ -64,15 +81,19 @@ enum class Phase { Announce, Sync, Stepping, Closing, Done };
 
 class StepperCore {
  public:
+  static constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
   struct Peer {
     St last_status = St::Announce;
     bool has_status = false, announced = false, observer = false;
-    bool due = false, done = false, closed = false;
-    uint64_t last_step = 0;
+    bool closed = false, failed = false;
+    bool answered = false;      // answered the current QUERY
+    uint64_t last_step = 0;     // start-up: SYNC round answered
+    uint64_t next = 0;          // n: every due step below it is done
     uint32_t multiple = 1, group = 0;
     double compute_s = 0.0, mission_duration_s = 0.0;
-    std::vector<std::string> outputs;
-    std::string waiting_for;
+    std::vector<std::string> outputs, inputs;
+    std::string waiting_for;    // start-up: links; stepping: the answer to the last QUERY
+    std::string error;          // its ERROR message (stepping)
   };
 
   StepperCore(StepperConfig cfg, StepperTransport& tr);
@@ -81,6 +102,7 @@ class StepperCore {
   void onTick(double wall_s);
 
   Phase phase() const { return phase_; }
+  /// While stepping: the base step every participant is done through; at the end: k_end.
   uint64_t step() const { return k_; }
   Nanos time() const { return t_; }
   double dt_s() const { return cfg_.dt_s; }
@@ -93,19 +115,21 @@ class StepperCore {
   double wallStart_s() const { return wall0_; }
   const std::map<std::string, Peer>& peers() const { return peers_; }
   const std::vector<std::vector<std::string>>& groups() const { return groups_; }
-  /// Number of STEP commands sent (one per due group per base step).
-  uint64_t stepCommands() const { return step_commands_; }
+  /// Number of GRANT commands sent.
+  uint64_t grants() const { return grants_; }
 
  private:
   std::string buildGroups();
   std::string missing(bool (*pred)(const Peer&)) const;
   void sendSync();
   void sendStart();
-  void fillTable(Table& t) const;
-  void beginStep(double wall_s);
-  void commandNextGroup(double wall_s);
+  void fillTable(Table& t, bool readers) const;
+  void update(double wall_s);
+  void timeout(double wall_s);
   void finish(bool aborted, const std::string& reason, double wall_s);
   void complete();
+  void clockAt(Nanos t);
+  uint64_t endStep() const;
 
   StepperConfig cfg_;
   StepperTransport& tr_;
@@ -114,12 +138,13 @@ class StepperCore {
   Phase phase_ = Phase::Announce;
   Nanos dt_ns_ = 0, t_ = 0;
   Nanos clock_period_ns_ = 0, last_clock_ = -1;  // /clock sample period, last sent (-1: none)
-  void clockAt(Nanos t);
-  uint64_t k_ = 0, sync_round_ = 0, step_commands_ = 0;
-  std::size_t group_ = 0;
-  bool finished_seen_ = false, aborted_ = false;
+  uint64_t k_ = 0, sync_round_ = 0, grants_ = 0;
+  uint64_t end_until_ = kNever, end_finished_ = kNever, end_error_ = kNever;
+  uint64_t horizon_ = 0, horizon_obs_ = 0, confirmed_ = 0;
+  std::string error_reason_, finished_by_;
+  bool aborted_ = false, query_sent_ = false;
   std::string reason_;
-  double wall0_ = 0.0, phase_since_ = 0.0, step_sent_ = 0.0;
+  double wall0_ = 0.0, phase_since_ = 0.0, last_progress_ = 0.0;
 };
 
 }  // namespace hbt::cosim::core

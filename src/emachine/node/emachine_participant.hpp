@@ -43,7 +43,7 @@ class EMachineParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::EmsCommand>* ems_ = nullptr;
   cosim::Input<hybrid_bus_twin::BatteryState>* battery_ = nullptr;
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // loops/cooling only
-  ros::Publisher state_pub_;
+  cosim::Output state_pub_;
   double ambient_T_K_ = 298.15;
   cosim::core::Warning* derating_ = nullptr;
 };

@@ -57,7 +57,7 @@ class EmsParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::BatteryState>* battery_ = nullptr;
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;
   cosim::Input<hybrid_bus_twin::AftertreatmentState>* ats_ = nullptr;
-  ros::Publisher command_pub_, engine_pub_;
+  cosim::Output command_pub_, engine_pub_;
   hybrid_bus_twin::DriverDemand last_demand_;
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = units::kStandardAtmosphere_Pa;
 };

@@ -9,6 +9,8 @@
 #include <hybrid_bus_twin/ExhaustState.h>
 #include <ros/ros.h>
 
+#include "cosim/output.hpp"
+
 #include "cosim/input_buffer.hpp"
 #include "engine/engine_model.hpp"
 
@@ -34,7 +36,7 @@ struct EngineLoopInputs {
 class EnginePorts {
  public:
   EnginePorts() = default;
-  EnginePorts(ros::Publisher state, ros::Publisher exhaust, ros::Publisher heat)
+  EnginePorts(cosim::Output state, cosim::Output exhaust, cosim::Output heat)
       : state_(std::move(state)), exhaust_(std::move(exhaust)), heat_(std::move(heat)) {}
   void publish(const ros::Time& t, const EngineOutputs& v) const {
     hybrid_bus_twin::EngineState s;
@@ -77,7 +79,7 @@ class EnginePorts {
   }
 
  private:
-  ros::Publisher state_, exhaust_, heat_;
+  cosim::Output state_, exhaust_, heat_;
 };
 
 }  // namespace hbt::engine

@@ -58,7 +58,7 @@ class VehicleParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // loops/cooling only
   cosim::Input<hybrid_bus_twin::EmsCommand>* ems_ = nullptr;         // loops/ems (hybrid) only
   cosim::Input<hybrid_bus_twin::EMachineState>* em_ = nullptr;       // loops/ems (hybrid) only
-  ros::Publisher state_pub_, command_pub_, cooling_pub_, demand_pub_;
+  cosim::Output state_pub_, command_pub_, cooling_pub_, demand_pub_;
   double last_engine_max_Nm_ = 0.0, last_engine_min_Nm_ = 0.0;
   bool engine_on_ = true;
   cosim::core::Warning* not_tracking_ = nullptr;

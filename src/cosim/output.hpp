@@ -1,0 +1,46 @@
+// An output topic of a lock-step participant (Participant::addOutput<M>). publish() hands the
+// message to core::ParticipantCore::publish: it is sent only if some participant of the run reads
+// its stamp (the START table's readers: a consumer stepping every 100 ms, the recorder at its
+// record period), else kept back until the run's end is known, since the observers read every
+// topic at t_end. So a 10 ms producer read only by 100 ms consumers sends every tenth state:
+// over TCP (mode:=nodes) each message sent is a write, a wake-up and a read per subscriber.
+// Tools that are not participants (rostopic echo, rviz) see the stamps the run reads.
+//
+// Publish a boost::shared_ptr (boost::make_shared<M>(msg)), not the message by value: roscpp
+// then hands intra-process subscribers (nodelets) the same object without serialising it and
+// skips its poll-thread wake-up (a pipe write + thread switch per publish).
+#pragma once
+#include <boost/make_shared.hpp>
+#include <ros/ros.h>
+
+#include <string>
+
+#include "cosim/core/participant_core.hpp"
+
+namespace hbt::cosim {
+
+class Output {
+ public:
+  Output() = default;
+  Output(ros::Publisher pub, core::ParticipantCore* core, std::size_t index)
+      : pub_(std::move(pub)), core_(core), index_(index) {}
+
+  template <class M>
+  void publish(const boost::shared_ptr<M>& m) const {
+    const ros::Publisher& p = pub_;
+    core_->publish(index_, static_cast<core::Nanos>(m->header.stamp.toNSec()), [p, m] { p.publish(m); });
+  }
+  template <class M>
+  void publish(const M& m) const {
+    publish(boost::make_shared<M>(m));
+  }
+  std::string getTopic() const { return pub_.getTopic(); }
+  explicit operator bool() const { return core_ != nullptr; }
+
+ private:
+  ros::Publisher pub_;
+  core::ParticipantCore* core_ = nullptr;
+  std::size_t index_ = 0;
+};
+
+}  // namespace hbt::cosim
