@@ -62,6 +62,7 @@ ARGS = {
     "until": number(0.0, 1e6),               # [s], 0 = whole mission
     "payload": number(0.0, 15000.0),         # [kg]
     "timeout": number(0.01, 600.0),          # [s wall]
+    "window_steps": number(1, 100000, integer=True),  # [base steps] report window of the lock-step
     "record_period": number(0.0, 3600.0),    # [s]
     "rviz": choice("true", "false"),
     "aux": existing("file", "{config}/aux", ".yaml"),

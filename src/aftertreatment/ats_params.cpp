@@ -103,7 +103,6 @@ void AtsParams::declare(ParamSet& ps) {
   ps.add("rtol", rtol, "-", 1e-12, 1e-3, "CVODE relative tolerance");
   ps.add("atol_theta", atol_theta, "-", 1e-15, 1e-4, "CVODE absolute tolerance on coverage");
   ps.add("max_steps", max_steps, "-", 10, 1000000, "CVODE steps per model step");
-  ps.add("model_step_s", model_step_s, "s", 1e-4, 1.0, "model step of the node (inputs averaged)");
   ps.setPrefix("");
 }
 

@@ -100,9 +100,6 @@ struct AtsParams {
   double rtol = 1e-8;
   double atol_theta = 1e-10;
   int max_steps = 5000;
-  /// Step of the model inside the node: the node averages its inputs over this interval
-  /// (several macro steps) and advances the model once (the ATS time constants are > 1 s).
-  double model_step_s = 0.1;
 
   void declare(ParamSet& ps);
   /// Cross-checks beyond the per-key ranges; throws InputError naming file and key.

@@ -42,9 +42,13 @@ std::string Stepper::readParams(core::StepperConfig& cfg) {
   pnh_.param("timeout_s", cfg.timeout_s, 1.0);
   pnh_.param("startup_timeout_s", cfg.startup_timeout_s, 60.0);
   pnh_.param("clock_period_s", cfg.clock_period_s, 0.1);  // /clock for observers: 10 Hz of sim time
-  int window = static_cast<int>(cfg.window_steps);
-  pnh_.param("window_steps", window, window);
-  cfg.window_steps = window < 1 ? 0u : static_cast<uint32_t>(window);  // 0: rejected by validate()
+  XmlRpc::XmlRpcValue window;
+  if (pnh_.getParam("window_steps", window)) {  // absent: the default (10 base steps)
+    if (window.getType() != XmlRpc::XmlRpcValue::TypeInt)
+      return cfg.where + ": key 'window_steps': must be an integer number of base steps";
+    const int w = static_cast<int>(window);
+    cfg.window_steps = w < 1 ? 0u : static_cast<uint32_t>(w);  // 0: rejected by validate()
+  }
   // participants: the private list if given (hand-written test launches), else the registry
   // /twin/participants/<name> that every participant's launch include writes (one place per
   // participant: launch/include/participant.launch, core.launch for the recorder)

@@ -10,7 +10,11 @@
 //   the model turns the torque request T_req [Nm] into the brake torque T_b it delivers within
 //   its limits T_mot(ω) <= T_b <= T_fl(ω), and the fuel flow ṁ_f [kg/s], exhaust state, engine-out
 //   NOx and heat to the coolant Q̇_c [W] that go with it; cumulative quantities integrate over the
-//   steps since reset(): m_f = Σ ṁ_f Δt [kg], W+ = Σ max(T_b ω, 0) Δt, W- = Σ min(T_b ω, 0) Δt [J].
+//   steps since reset(): m_f = Σ ṁ_f Δt [kg], W+ = Σ max(T_b ω, 0) Δt, W- = Σ min(T_b ω, 0) Δt [J],
+//   and (here, for both models) the exhaust totals of a slower consumer (the aftertreatment,
+//   which takes their difference over its 0.1 s step as the exact mean of the 10 ms values):
+//   m_exh = Σ ṁ Δt [kg], Σ ṁ T Δt [kg K], Σ T Δt [K s], m_i = Σ ṁ y_i Δt [kg] (O2, CO2, H2O),
+//   with ṁ = max(ṁ_exh, 0) and each step's outputs (what is published at the step's end).
 // Policies (one place: this class):
 //   start     reset(): at the engine's idle speed idleSpeed() (engine_map.yaml idle_speed_rad_s,
 //             the reference engine data both models read), brake torque 0, the given ambient
@@ -24,6 +28,7 @@
 //   exhaust T EngineOutputs::exhaust_T_K is always > 0: where the model has no exhaust flow state
 //             yet (before its first step) the ambient temperature of the last inputs.
 #pragma once
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -62,6 +67,9 @@ struct EngineOutputs {
   double exhaust_mass_flow_kg_s = 0, exhaust_T_K = 0;           // turbine outlet system
   double y_O2 = 0, y_CO2 = 0, y_H2O = 0, y_N2 = 0;              // mass fractions [-]
   double nox_mass_flow_kg_s = 0, nox_mass_kg = 0;               // engine-out, as NO2
+  // exhaust totals since reset() (see the header comment): [kg], [kg K], [K s], [kg] x 3
+  double exhaust_mass_kg = 0, exhaust_mass_T_kg_K = 0, exhaust_T_time_K_s = 0;
+  double o2_mass_kg = 0, co2_mass_kg = 0, h2o_mass_kg = 0;
   double heat_to_coolant_W = 0, heat_to_coolant_J = 0;          // [W], cumulative [J]
   double coolant_T_K = 0, back_pressure_Pa = 0;  // loop inputs the engine used (0 = none)
   double friction_correction_Nm = 0, pumping_correction_Nm = 0;  // map: cold oil, back-pressure
@@ -105,6 +113,13 @@ class EngineModel {
     if (!(in_.back_pressure_Pa > 0.0)) in_.back_pressure_Pa = 0.0;
     stepModel(dt_s, in_);
     finishOutputs();
+    const double m = std::max(0.0, out_.exhaust_mass_flow_kg_s);
+    out_.exhaust_mass_kg += m * dt_s;
+    out_.exhaust_mass_T_kg_K += m * out_.exhaust_T_K * dt_s;
+    out_.exhaust_T_time_K_s += out_.exhaust_T_K * dt_s;
+    out_.o2_mass_kg += m * out_.y_O2 * dt_s;
+    out_.co2_mass_kg += m * out_.y_CO2 * dt_s;
+    out_.h2o_mass_kg += m * out_.y_H2O * dt_s;
     return out_;
   }
   const EngineOutputs& outputs() const { return out_; }

@@ -18,7 +18,8 @@ inline AtsParams loadParams() {
   AtsParams p;
   ParamSet ps;
   p.declare(ps);
-  applyParams(ps, readYamlParams(file));
+  // cosim/ keys (the node's macro step) belong to the participant base class, as in the node
+  applyParams(ps, readYamlParams(file), {"cosim/"});
   p.validate(file);
   return p;
 }

@@ -182,14 +182,14 @@ TEST(Aftertreatment, ConfigFileLoadsAndBadInputIsRejected) {
   AtsParams p;
   ParamSet ps;
   p.declare(ps);
-  EXPECT_NO_THROW(applyParams(ps, src));
+  EXPECT_NO_THROW(applyParams(ps, src, {"cosim/"}));  // cosim/: the participant base class's
   EXPECT_EQ(p.scr.slices, 10);
   auto expectError = [&](ParamSource s, const std::string& key) {
     AtsParams q;
     ParamSet qs;
     q.declare(qs);
     try {
-      applyParams(qs, s);
+      applyParams(qs, s, {"cosim/"});
       q.validate(s.file);
       FAIL() << "no error for " << key;
     } catch (const InputError& e) {

@@ -5,6 +5,7 @@
 // participant's `model` parameter.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <memory>
 #include <vector>
@@ -85,5 +86,40 @@ TEST(EngineModel, BothModelsFollowTheSameStartAmbientAndLoopPolicies) {
     EXPECT_GT(m->outputs().brake_torque_Nm, 0.0);
     EXPECT_GT(m->outputs().max_torque_Nm, 500.0);
     EXPECT_LT(m->outputs().min_torque_Nm, 0.0);
+  }
+}
+
+TEST(EngineModel, ExhaustTotalsIntegrateEachStepsOutputs) {
+  // the totals a 0.1 s consumer differentiates (the aftertreatment) are the sums of each 10 ms
+  // step's published values times the step, for both models, through a tip-in and a fuel cut
+  for (auto& m : bothModels()) {
+    SCOPED_TRACE(m->name());
+    m->reset(288.15);
+    EXPECT_EQ(m->outputs().exhaust_mass_kg, 0.0);
+    double mass = 0, massT = 0, Tt = 0, o2 = 0, co2 = 0, h2o = 0;
+    engine::EngineInputs in;
+    in.ambient_T_K = 288.15;
+    for (int k = 0; k < 60; ++k) {
+      in.speed_rad_s = units::rpmToRadps(800.0 + 10.0 * k);
+      in.torque_request_Nm = k < 40 ? 50.0 + 20.0 * k : 0.0;
+      in.fuel_enabled = k < 50;
+      const engine::EngineOutputs& o = m->step(0.01, in);
+      const double mdot = std::max(0.0, o.exhaust_mass_flow_kg_s);
+      mass += mdot * 0.01;
+      massT += mdot * o.exhaust_T_K * 0.01;
+      Tt += o.exhaust_T_K * 0.01;
+      o2 += mdot * o.y_O2 * 0.01;
+      co2 += mdot * o.y_CO2 * 0.01;
+      h2o += mdot * o.y_H2O * 0.01;
+    }
+    const engine::EngineOutputs& o = m->outputs();
+    EXPECT_GT(mass, 0.0);
+    EXPECT_NEAR(o.exhaust_mass_kg, mass, 1e-15 * 60);
+    EXPECT_NEAR(o.exhaust_mass_T_kg_K, massT, 1e-12 * 60);
+    EXPECT_NEAR(o.exhaust_T_time_K_s, Tt, 1e-12 * 60);
+    EXPECT_NEAR(o.o2_mass_kg, o2, 1e-15 * 60);
+    EXPECT_NEAR(o.co2_mass_kg, co2, 1e-15 * 60);
+    EXPECT_NEAR(o.h2o_mass_kg, h2o, 1e-15 * 60);
+    EXPECT_GT(o.co2_mass_kg, 0.0);  // fired
   }
 }

@@ -27,7 +27,7 @@ UNTIL = 60.0
 GRACE_S = 30.0
 NS = 10**9
 # participant -> its macro step [s] (config/*.yaml cosim/macro_step_s; the recorder: record_period 0)
-PARTICIPANTS = {"vehicle": 0.01, "engine": 0.01, "aftertreatment": 0.01, "cooling": 0.1, "recorder": 0.01}
+PARTICIPANTS = {"vehicle": 0.01, "engine": 0.01, "aftertreatment": 0.1, "cooling": 0.1, "recorder": 0.01}
 
 
 def read_statuses(bag):

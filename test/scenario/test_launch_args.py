@@ -36,6 +36,10 @@ class LaunchArgs(unittest.TestCase):
         self.rejected("payload:=-1", "outside")
         self.rejected("pressure:=101325", "outside")  # kPa, not Pa
         self.rejected("pressure:=20", "outside")
+        self.rejected("window_steps:=0", "outside")
+        self.rejected("window_steps:=2.5", "not an integer")
+        rc, out, _ = check("window_steps:=1e2")
+        self.assertEqual((rc, out), (0, ["window_steps:=100"]))
 
     def test_not_a_number(self):
         self.rejected("ambient:=warm", "not a number")

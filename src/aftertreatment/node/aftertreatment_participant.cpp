@@ -19,7 +19,7 @@ void AftertreatmentParticipant::configure() {
   ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);  // tailpipe pressure
   model_ = std::make_unique<Aftertreatment>(params_);
   model_->reset(ambient_T_K_, ambient_p_Pa_);  // cold start at ambient
-  clearAccumulator();
+  inputs_.reset();
   exhaust_ = &addInput<hybrid_bus_twin::ExhaustState>("/engine/exhaust");
   vehicle_ = &addInput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
   state_pub_ = addOutput<hybrid_bus_twin::AftertreatmentState>("/aftertreatment/state");
@@ -50,48 +50,33 @@ void AftertreatmentParticipant::diagnosticValues(cosim::core::Nanos, std::vector
   kv.push_back({"back_pressure_kpa", formatNumber(1e-3 * o.back_pressure_Pa)});
 }
 
-void AftertreatmentParticipant::clearAccumulator() {
-  acc_t_ = acc_m_ = acc_mT_ = acc_nox_ = acc_hc_ = acc_co_ = 0.0;
-  acc_yO2_ = acc_yCO2_ = acc_yH2O_ = acc_T_ = acc_v_ = acc_Tamb_ = 0.0;
-}
-
 void AftertreatmentParticipant::step(const ros::Time& t, double dt_s) {
   const auto& e = exhaust_->at(t);
   const auto& v = vehicle_->at(t);
-  const double m = std::max(0.0, e.mass_flow_kg_s);
-  acc_t_ += dt_s;
-  acc_m_ += m * dt_s;
-  acc_mT_ += m * e.temperature_k * dt_s;
-  acc_T_ += e.temperature_k * dt_s;
-  acc_yO2_ += m * e.y_o2 * dt_s;
-  acc_yCO2_ += m * e.y_co2 * dt_s;
-  acc_yH2O_ += m * e.y_h2o * dt_s;
-  acc_nox_ += e.nox_mass_flow_kg_s * dt_s;
-  acc_hc_ += e.hc_mass_flow_kg_s * dt_s;
-  acc_co_ += e.co_mass_flow_kg_s * dt_s;
-  acc_v_ += v.vehicle_speed_m_s * dt_s;
-  acc_Tamb_ += (v.ambient_temperature_k > 0.0 ? v.ambient_temperature_k : ambient_T_K_) * dt_s;
-  if (acc_t_ < params_.model_step_s - 1e-9) return;
-
-  AtsInputs in;
-  in.exhaust_mass_flow_kg_s = acc_m_ / acc_t_;
-  if (acc_m_ > 0.0) {
-    in.exhaust_T_K = acc_mT_ / acc_m_;
-    in.comp.y_O2 = acc_yO2_ / acc_m_;
-    in.comp.y_CO2 = acc_yCO2_ / acc_m_;
-    in.comp.y_H2O = acc_yH2O_ / acc_m_;
-  } else {
-    in.exhaust_T_K = acc_T_ / acc_t_;  // no flow: the temperature does not matter
-  }
-  in.comp.y_N2 = 1.0 - in.comp.y_O2 - in.comp.y_CO2 - in.comp.y_H2O;
-  in.nox_mass_flow_kg_s = std::max(0.0, acc_nox_ / acc_t_);
-  in.hc_mass_flow_kg_s = std::max(0.0, acc_hc_ / acc_t_);
-  in.co_mass_flow_kg_s = std::max(0.0, acc_co_ / acc_t_);
-  in.vehicle_speed_m_s = std::max(0.0, acc_v_ / acc_t_);
-  in.ambient_T_K = acc_Tamb_ / acc_t_;
-  in.ambient_p_Pa = ambient_p_Pa_;
-  model_->step(acc_t_, in);
-  clearAccumulator();
+  InputTotals now;  // cumulative since t = 0 (step_inputs.hpp)
+  now.exhaust_mass_kg = e.mass_kg;
+  now.exhaust_mass_T_kg_K = e.mass_temperature_kg_k;
+  now.exhaust_T_time_K_s = e.temperature_time_k_s;
+  now.o2_kg = e.o2_mass_kg;
+  now.co2_kg = e.co2_mass_kg;
+  now.h2o_kg = e.h2o_mass_kg;
+  now.nox_kg = e.nox_mass_kg;
+  now.hc_kg = e.hc_mass_kg;
+  now.co_kg = e.co_mass_kg;
+  now.distance_m = v.distance_m;
+  AtsInputs point;  // the sample's own values: the first step, no-flow composition, ambient
+  point.exhaust_mass_flow_kg_s = e.mass_flow_kg_s;
+  point.exhaust_T_K = e.temperature_k;
+  point.comp.y_O2 = e.y_o2;
+  point.comp.y_CO2 = e.y_co2;
+  point.comp.y_H2O = e.y_h2o;
+  point.nox_mass_flow_kg_s = e.nox_mass_flow_kg_s;
+  point.hc_mass_flow_kg_s = e.hc_mass_flow_kg_s;
+  point.co_mass_flow_kg_s = e.co_mass_flow_kg_s;
+  point.vehicle_speed_m_s = v.vehicle_speed_m_s;
+  point.ambient_T_K = v.ambient_temperature_k > 0.0 ? v.ambient_temperature_k : ambient_T_K_;
+  point.ambient_p_Pa = ambient_p_Pa_;
+  model_->step(dt_s, inputs_.next(now, point, dt_s));
 }
 
 void AftertreatmentParticipant::publishOutputs(const ros::Time& t) {

@@ -1,20 +1,21 @@
 // ROS bridge of the aftertreatment (DOC -> DPF -> SCR -> ASC): converts messages and parameters,
 // nothing else. Model: hbt::aftertreatment::Aftertreatment (../aftertreatment.hpp).
 //
-// Inputs  (stamped t_k): /engine/exhaust (ExhaustState: mass flow, temperature, composition, NOx,
-//                        HC, CO), /vehicle/to_cooling (VehicleToCooling: vehicle speed for the
-//                        can's forced convection, ambient temperature).
-// Outputs (stamped t_k): /aftertreatment/state (AftertreatmentState: back-pressure at the turbine
-//                        outlet, brick temperatures, tailpipe NOx, NH3 slip, AdBlue, light-off,
-//                        energy and NH3 balances).
-// Parameters: private namespace = config/aftertreatment.yaml (AtsParams::declare);
-// /scenario/ambient_temperature_c, /scenario/ambient_pressure_pa (tailpipe pressure).
+// Inputs  (held at t_k): /engine/exhaust (ExhaustState: cumulative exhaust mass, enthalpy-like
+//                        mass x temperature, species and NOx totals; point values for the first
+//                        step), /vehicle/to_cooling (VehicleToCooling: distance for the mean
+//                        vehicle speed -- the can's forced convection --, ambient temperature).
+// Outputs (stamped t_k + P): /aftertreatment/state (AftertreatmentState: back-pressure at the
+//                        turbine outlet, brick temperatures, tailpipe NOx, NH3 slip, AdBlue,
+//                        light-off, energy and NH3 balances).
+// Parameters: private namespace = config/aftertreatment.yaml (AtsParams::declare; the macro step
+// P = cosim/macro_step_s, 0.1 s: a thermal node); /scenario/ambient_temperature_c,
+// /scenario/ambient_pressure_pa (tailpipe pressure).
 // Initial state: cold start -- every brick (substrate, washcoat, can) at the scenario ambient
 // temperature, the SCR store at scr_kinetics/initial_coverage (0 = empty), back-pressure =
 // ambient pressure.
-// Time stepping: the inputs of the macro steps are accumulated (time averages of the flows,
-// mass-flow-weighted exhaust temperature and composition) and the model is advanced once every
-// numerics/model_step_s; the state published between two model steps is the last one.
+// Time stepping: one model step per macro step P, fed the exact means of the 10 ms producers over
+// the last P from their cumulative totals (../step_inputs.hpp).
 // Diagnostics (README "Diagnostics"): warning ats_below_light_off (the SCR not lit off --
 // AftertreatmentState.light_off false -- for aftertreatment/light_off_grace_s without a break,
 // config/diagnostics.yaml); key/values the CVODE steps of the SCR storage (in the window and in
@@ -26,6 +27,7 @@
 #include <memory>
 
 #include "aftertreatment/aftertreatment.hpp"
+#include "aftertreatment/step_inputs.hpp"
 #include "common/units.hpp"
 #include "cosim/participant.hpp"
 
@@ -43,7 +45,6 @@ class AftertreatmentParticipant : public cosim::Participant {
   void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
-  void clearAccumulator();
   std::unique_ptr<Aftertreatment> model_;
   AtsParams params_;
   cosim::Input<hybrid_bus_twin::ExhaustState>* exhaust_ = nullptr;
@@ -53,9 +54,7 @@ class AftertreatmentParticipant : public cosim::Participant {
   double ambient_p_Pa_ = units::kStandardAtmosphere_Pa;  // tailpipe pressure, /scenario/ambient_pressure_pa
   long cvode_steps_at_status_ = 0;  // SCR solver steps counted at the last status
   cosim::core::Warning* below_light_off_ = nullptr;
-  // input accumulator over the macro steps of one model step
-  double acc_t_ = 0.0, acc_m_ = 0.0, acc_mT_ = 0.0, acc_nox_ = 0.0, acc_hc_ = 0.0, acc_co_ = 0.0;
-  double acc_yO2_ = 0.0, acc_yCO2_ = 0.0, acc_yH2O_ = 0.0, acc_T_ = 0.0, acc_v_ = 0.0, acc_Tamb_ = 0.0;
+  StepInputs inputs_;  // step means from the producers' cumulative totals
 };
 
 }  // namespace hbt::aftertreatment

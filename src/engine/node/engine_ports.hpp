@@ -69,6 +69,12 @@ class EnginePorts {
     x.y_n2 = v.y_N2;
     x.nox_mass_flow_kg_s = v.nox_mass_flow_kg_s;
     x.nox_mass_kg = v.nox_mass_kg;
+    x.mass_kg = v.exhaust_mass_kg;
+    x.mass_temperature_kg_k = v.exhaust_mass_T_kg_K;
+    x.temperature_time_k_s = v.exhaust_T_time_K_s;
+    x.o2_mass_kg = v.o2_mass_kg;
+    x.co2_mass_kg = v.co2_mass_kg;
+    x.h2o_mass_kg = v.h2o_mass_kg;
     exhaust_.publish(boost::make_shared<hybrid_bus_twin::ExhaustState>(x));
     hybrid_bus_twin::EngineHeat h;
     h.header.stamp = t;

@@ -277,6 +277,7 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
   hybrid_bus_twin::VehicleToCooling vc;
   vc.header.stamp = t;
   vc.vehicle_speed_m_s = o.speed_m_s;
+  vc.distance_m = o.distance_m;
   vc.ambient_temperature_k = ambient_T_K_;
   cooling_pub_.publish(boost::make_shared<hybrid_bus_twin::VehicleToCooling>(vc));
 }
