@@ -17,6 +17,7 @@
 
 #include "common/errors.hpp"
 #include "cosim/param_loader.hpp"
+#include "cosim/participant_main.hpp"
 
 namespace hbt::cosim {
 
@@ -207,6 +208,11 @@ void Participant::writeResolvedConfig(const std::vector<ResolvedParam>& params) 
 }
 
 void Participant::readMacroStep() {
+  XmlRpc::XmlRpcValue th;  // nodelets: the callback thread (participant_main.hpp); checked here
+  if (pnh_.getParam("cosim/thread", th) && (th.getType() != XmlRpc::XmlRpcValue::TypeString ||
+                                            !LockstepQueue::validThreadName(std::string(th))))
+    throw InputError(configFile(), "cosim/thread",
+                     "must be a thread name (letters, digits, _; at most 64 characters)");
   const std::string key = "cosim/macro_step_s";
   XmlRpc::XmlRpcValue v;
   if (!pnh_.getParam(key, v)) return;  // absent: the stepper's base step

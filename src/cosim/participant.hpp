@@ -17,7 +17,9 @@
 //     integer multiple m of dt (checked before step 0: not a multiple, <= 0, NaN, not a number ->
 //     ERROR naming the file and the key). It steps only at base steps k with k % m == 0:
 //     step(t_k, P) advances t_k -> t_k + P and its outputs are stamped t_k + P; they hold (are
-//     what every consumer reads) until its next step.
+//     what every consumer reads) until its next step. `cosim/thread` [name, default lockstep]:
+//     as a nodelet, the callback thread it runs on (participant_main.hpp; a slow participant
+//     that exchanges rarely computes beside the torque loop; no effect on results, none as a node).
 //  3. Held values. For its step at t_k the participant waits (event driven) until every input
 //     has the message its rule names, then calls step(t_k, P); Input::at(t_k) returns it. For a
 //     producer of macro step P_p:

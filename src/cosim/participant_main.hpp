@@ -4,12 +4,16 @@
 //   int main(int argc, char** argv) { return hbt::cosim::runNode<MyParticipant>(argc, argv, "my"); }
 //   HBT_PARTICIPANT_NODELET(hbt::MyParticipant, MyNodelet)   // in one .cpp of the nodelet library
 //
-// Nodelets (mode:=nodelets) do not use the manager's worker pool: every twin nodelet in a
-// manager process shares one callback queue served by one thread (LockstepQueue). A lock-step
-// exchange is a chain of short callbacks (command -> step -> outputs -> status -> next command);
-// in one thread an intra-process publish only appends the next callback, while the manager's
-// pool moved every callback through its manager thread to a worker (two thread switches per
-// message: measured 40-57 % of the manager's CPU in the kernel's context switch).
+// Nodelets (mode:=nodelets) do not use the manager's worker pool: the twin's nodelets in a
+// manager process share callback queues, each served by one thread (LockstepQueue), named by the
+// participant's `cosim/thread` key (default "lockstep": everyone on one thread). A tight
+// exchange (the 10 ms torque loop: vehicle <-> engine, EMS, e-machine, battery) is a chain of
+// short callbacks; in one thread an intra-process publish only appends the next callback, while
+// the manager's pool moved every callback through its manager thread to a worker (two thread
+// switches per message: measured 40-57 % of the manager's CPU in the kernel's context switch).
+// A slow participant that exchanges rarely (the 0.1 s thermal nodes) can compute on a thread of
+// its own (`cosim/thread: thermal`) beside the torque loop -- stepping is data-driven, so which
+// thread runs what changes no result, only the wall time on a machine with cores to spare.
 #pragma once
 #include <nodelet/nodelet.h>
 #include <pluginlib/class_list_macros.hpp>
@@ -17,26 +21,44 @@
 #include <ros/ros.h>
 
 #include <atomic>
+#include <cctype>
+#include <map>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
 
 namespace hbt::cosim {
 
-/// The one callback queue + thread shared by the twin's nodelets in this process. Held by each
-/// nodelet (shared_ptr): the thread starts with the first and stops with the last.
+/// A callback queue + thread shared by the twin's nodelets of one `cosim/thread` name in this
+/// process. Held by each nodelet (shared_ptr): the thread starts with the first and stops with
+/// the last.
 class LockstepQueue {
  public:
-  static std::shared_ptr<LockstepQueue> acquire() {
+  static constexpr const char* kDefault = "lockstep";
+  static std::shared_ptr<LockstepQueue> acquire(const std::string& name = kDefault) {
     static std::mutex m;
-    static std::weak_ptr<LockstepQueue> shared;
+    static std::map<std::string, std::weak_ptr<LockstepQueue>> shared;
     std::lock_guard<std::mutex> lock(m);
-    auto q = shared.lock();
+    auto q = shared[name].lock();
     if (!q) {
       q = std::shared_ptr<LockstepQueue>(new LockstepQueue());
-      shared = q;
+      shared[name] = q;
     }
     return q;
+  }
+  /// The thread name a participant's private `cosim/thread` asks for; the default when it is
+  /// absent or not a valid name (the participant itself then fails naming the key).
+  static std::string threadName(const ros::NodeHandle& pnh) {
+    std::string name;
+    if (!pnh.getParam("cosim/thread", name) || !validThreadName(name)) return kDefault;
+    return name;
+  }
+  static bool validThreadName(const std::string& name) {
+    if (name.empty() || name.size() > 64) return false;
+    for (char c : name)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+    return true;
   }
   ~LockstepQueue() {
     stop_ = true;
@@ -74,7 +96,7 @@ template <class P>
 class ParticipantNodelet : public nodelet::Nodelet {
  protected:
   void onInit() override {
-    queue_ = LockstepQueue::acquire();
+    queue_ = LockstepQueue::acquire(LockstepQueue::threadName(getPrivateNodeHandle()));
     participant_ = std::make_unique<P>(queue_->bind(getNodeHandle()), queue_->bind(getPrivateNodeHandle()));
     participant_->start();
   }

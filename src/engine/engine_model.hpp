@@ -62,7 +62,6 @@ struct EngineOutputs {
   double fuel_mass_flow_kg_s = 0, fuel_mass_kg = 0;             // [kg/s], cumulative [kg]
   double positive_work_J = 0, motoring_work_J = 0;              // cumulative [J]
   double boost_pressure_Pa = 0, turbo_speed_rad_s = 0, lambda = 0;  // map: no turbo (0)
-  double cpu_time_s = 0;                                        // CPU of the last step (1D) [s]
   double charge_air_T_K = 0;                                    // intake manifold [K]
   double exhaust_mass_flow_kg_s = 0, exhaust_T_K = 0;           // turbine outlet system
   double y_O2 = 0, y_CO2 = 0, y_H2O = 0, y_N2 = 0;              // mass fractions [-]

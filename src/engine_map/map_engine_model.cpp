@@ -44,7 +44,6 @@ void MapEngineModel::copyOutputs(double w) {
   v.charge_air_T_K = o.gas.intake_manifold_T_K;
   v.turbo_speed_rad_s = 0.0;  // no turbocharger in the map model
   v.lambda = o.gas.lambda;
-  v.cpu_time_s = 0.0;
   v.exhaust_mass_flow_kg_s = o.gas.exhaust_mass_flow_kg_s;
   v.exhaust_T_K = o.gas.exhaust_T_K;
   v.y_O2 = o.gas.comp.y_O2;

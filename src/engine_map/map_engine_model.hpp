@@ -7,7 +7,7 @@
 //   max/min_torque_Nm   the live limits T_fl(ω) − ΔT and T_mot(ω) − ΔT, ΔT = ΔT_fric + ΔT_pump
 //                       (the extra indicated torque of cold oil and back-pressure of the step)
 //   boost, λ, charge air, exhaust flow/T/composition, NOx, coolant heat: the quasi-steady gas path
-//   turbo_speed_rad_s   0 (no turbocharger in this model), cpu_time_s 0
+//   turbo_speed_rad_s   0 (no turbocharger in this model)
 // Idle speed: MapEngineParams::idle_speed_rad_s (engine_map.yaml). boostLimited(m): the request
 // above the PT1 dynamic full load by more than m while that limit is m below the static one.
 #pragma once

@@ -5,7 +5,7 @@ bit-identical bags; the driveline energy balance of the
 run closes and the engine's own brake work agrees with the work the vehicle received; a killed
 node stops the run within 2 s naming it with a readable bag; bad input (missing, malformed or
 truncated cycle, negative mass, unknown key, NaN, a macro step that is not a multiple of the base
-step, a bad `order`) is rejected before the first step with a message naming the file and the key;
+step, a bad thread name, a bad `order`) is rejected before the first step with a message naming the file and the key;
 the engine at twice the base step, stepped after the vehicle, runs and is recorded by its held
 value."""
 import json
@@ -308,6 +308,10 @@ class Failures(unittest.TestCase):
     def test_bad_macro_step(self):
         cfg = self.config_copy("engine_map.yaml", lambda t: t + "\ncosim:\n  macro_step_s: 0.015\n")
         self.expect_rejected("engine_map.yaml", "cosim/macro_step_s", config=cfg)
+
+    def test_bad_thread_name(self):
+        cfg = self.config_copy("cooling.yaml", lambda t: t.replace("thread: thermal", "thread: 'the rmal'", 1))
+        self.expect_rejected("cooling.yaml", "cosim/thread", config=cfg)
 
     def test_unknown_engine_model(self):
         """The engine participant's `model` (launch argument engine) is map | 1d: anything else

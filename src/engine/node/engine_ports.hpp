@@ -53,7 +53,6 @@ class EnginePorts {
     s.charge_air_temperature_k = v.charge_air_T_K;
     s.turbo_speed_rad_s = v.turbo_speed_rad_s;
     s.lambda = v.lambda;
-    s.cpu_time_s = v.cpu_time_s;
     s.coolant_temperature_k = v.coolant_T_K;
     s.back_pressure_pa = v.back_pressure_Pa;
     s.friction_correction_nm = v.friction_correction_Nm;
