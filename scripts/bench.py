@@ -75,12 +75,14 @@ def bench_map(a):
             rows.append((mode, s))
     print("\nbaseline_urban, map engine, ambient 25 C, macro step %s s" %
           (rows[0][1]["macro_step_s"] if rows else "?"))
-    print("| mode | sim time [s] | wall time [s] | wall/sim | steps/s | distance [km] | fuel [L/100km] | compute time per node [s] |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| mode | sim time [s] | wall time [s] | wall/sim | wall / summed compute | steps/s | distance [km] | fuel [L/100km] | compute time per node [s] |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for mode, s in rows:
         steps = s["sim_time_s"] / s["macro_step_s"]
-        print("| %s | %.1f | %.1f | %.4f | %.0f | %.3f | %.2f | %s |" % (
+        compute = sum(s["compute_time_s"].values())
+        print("| %s | %.1f | %.1f | %.4f | %.2f | %.0f | %.3f | %.2f | %s |" % (
             mode, s["sim_time_s"], s["wall_time_s"], s["wall_time_s"] / s["sim_time_s"],
+            s["wall_time_s"] / compute if compute > 0 else float("nan"),
             steps / s["wall_time_s"], s.get("distance_km", float("nan")),
             s.get("fuel_l_per_100km", float("nan")),
             ", ".join("%s %.1f" % kv for kv in sorted(s["compute_time_s"].items()))))
@@ -142,12 +144,15 @@ def bench_1d(a):
             rows.append((engine, s))
             outs[engine] = out
     print("\nbaseline_urban, ambient 25 C, mode nodelets: map engine vs 1D engine (FSM)")
-    print("| engine | sim time [s] | wall/sim | engine compute/sim | distance [km] | fuel [kg] | fuel [L/100km] | NOx engine-out [g] |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| engine | sim time [s] | wall/sim | engine compute/sim | wall / engine compute | other participants' compute/sim | distance [km] | fuel [kg] | fuel [L/100km] | NOx engine-out [g] |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for engine, s in rows:
-        print("| %s | %.1f | %.4f | %.4f | %.3f | %.3f | %.2f | %s |" % (
-            engine, s["sim_time_s"], s["wall_time_s"] / s["sim_time_s"],
-            s["compute_time_s"].get("engine", float("nan")) / s["sim_time_s"], s.get("distance_km", float("nan")),
+        c = s["compute_time_s"]
+        ce = c.get("engine", float("nan"))
+        print("| %s | %.1f | %.4f | %.4f | %.3f | %.4f | %.3f | %.3f | %.2f | %s |" % (
+            engine, s["sim_time_s"], s["wall_time_s"] / s["sim_time_s"], ce / s["sim_time_s"],
+            s["wall_time_s"] / ce, sum(v for k, v in c.items() if k != "engine") / s["sim_time_s"],
+            s.get("distance_km", float("nan")),
             s.get("fuel_kg", float("nan")), s.get("fuel_l_per_100km", float("nan")),
             "%.1f" % s["nox_engine_out_g"] if "nox_engine_out_g" in s else "-"))
     if len(outs) == 2:

@@ -42,8 +42,9 @@ std::string Stepper::readParams(core::StepperConfig& cfg) {
   pnh_.param("timeout_s", cfg.timeout_s, 1.0);
   pnh_.param("startup_timeout_s", cfg.startup_timeout_s, 60.0);
   pnh_.param("clock_period_s", cfg.clock_period_s, 0.1);  // /clock for observers: 10 Hz of sim time
+  pnh_.param("clock_wall_period_s", cfg.clock_wall_period_s, 0.05);  // and at most 20 Hz of wall time
   XmlRpc::XmlRpcValue window;
-  if (pnh_.getParam("window_steps", window)) {  // absent: the default (10 base steps)
+  if (pnh_.getParam("window_steps", window)) {  // absent: the default (50 base steps)
     if (window.getType() != XmlRpc::XmlRpcValue::TypeInt)
       return cfg.where + ": key 'window_steps': must be an integer number of base steps";
     const int w = static_cast<int>(window);

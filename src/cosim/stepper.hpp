@@ -16,10 +16,11 @@
 // producer in an earlier group (so within a base step the groups step one after the other, by
 // their data); absent = all in one group (Jacobi). Every participant except the recorder must be
 // in exactly one group; the recorder is always in the last one.
-// clock_period_s [s sim, default 0.1; 0 = every base step]: /clock is published at t = 0, then
-// (with the time every participant is done through) at most once per this simulated period, and
-// at t_end (observers only: nothing of the protocol reads it).
-// window_steps [base steps, default 10, 1..100000]: the report window W (core/stepper_core.hpp):
+// clock_period_s [s sim, default 0.1; 0 = every base step], clock_wall_period_s [s wall, default
+// 0.05]: /clock is published at t = 0, then (with the time every participant is done through) at
+// most once per this simulated period and per this wall period, and at t_end (observers only:
+// nothing of the protocol reads it; every process with use_sim_time wakes for each one).
+// window_steps [base steps, default 50, 1..100000]: the report window W (core/stepper_core.hpp):
 // participants report at every multiple of W and the grants reach 2 W ahead of the slowest.
 #pragma once
 #include <hybrid_bus_twin/StepStatus.h>

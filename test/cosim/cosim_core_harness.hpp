@@ -123,7 +123,11 @@ class Bus : public StepperTransport {
   void run(StepperConfig cfg, double max_wall_s = 120.0);
 
   void sendCommand(const Command& c) override;
-  void publishClock(Nanos t) override { clocks.push_back(t); }
+  void publishClock(Nanos t) override {
+    clocks.push_back(t);
+    clock_walls.push_back(wall);
+  }
+  std::vector<double> clock_walls;  // wall time of each /clock
   void warn(const std::string& m) override { warnings.push_back(m); }
   void complete() override {
     completed = true;

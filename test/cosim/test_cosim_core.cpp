@@ -112,6 +112,29 @@ TEST(CosimCore, ClockOnlyEveryClockPeriod) {
   for (std::size_t i = 1; i + 1 < bus.clocks.size(); ++i) EXPECT_GE(bus.clocks[i] - bus.clocks[i - 1], 50 * MS);
   cfg.clock_period_s = -1.0;
   EXPECT_NE(validate(cfg).find("'clock_period_s'"), std::string::npos);
+  cfg.clock_period_s = 0.05;
+  cfg.clock_wall_period_s = 61.0;
+  EXPECT_NE(validate(cfg).find("'clock_wall_period_s'"), std::string::npos);
+}
+
+TEST(CosimCore, ClockAtMostEveryClockWallPeriod) {
+  // 0.3 s of wall per step of a: at most one /clock per wall second, whatever the sim period;
+  // t = 0 and t_end always
+  Bus bus;
+  Faults slow;
+  slow.step_wall_s = 0.3;
+  addPair(bus, slow, {});
+  StepperConfig cfg = config({"a", "b"}, 0.3);
+  cfg.window_steps = 1;
+  cfg.clock_wall_period_s = 1.0;
+  bus.run(cfg, 100.0);
+  ASSERT_TRUE(bus.completed);
+  EXPECT_FALSE(bus.stepper->aborted()) << bus.stepper->reason();
+  ASSERT_GE(bus.clocks.size(), 4u);
+  EXPECT_LT(bus.clocks.size(), 12u);  // 30 steps: 9 s of wall
+  EXPECT_EQ(bus.clocks.front(), 0);
+  EXPECT_EQ(bus.clocks.back(), 300 * MS);
+  for (std::size_t i = 1; i + 1 < bus.clocks.size(); ++i) EXPECT_GE(bus.clock_walls[i] - bus.clock_walls[i - 1], 1.0);
 }
 
 TEST(CosimCore, EndsByFinishedOnly) {

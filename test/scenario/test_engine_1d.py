@@ -36,8 +36,8 @@ class Engine1DScenario(unittest.TestCase):
         # fsm past t = 40 s: a cylinder's unburned zone empties there (zone-merge regression);
         # to 57 s: the first bus stop (neutral at standstill 51.5-57.0 s)
         # fsm_nodes: the first 10 s again, as separate processes (TCP), window 1
-        for name, solver, until, mode, window in (("fsm", "fsm", 57.0, "nodelets", 10),
-                                                  ("tvd", "tvd", 3.0, "nodelets", 10),
+        for name, solver, until, mode, window in (("fsm", "fsm", 57.0, "nodelets", 50),
+                                                  ("tvd", "tvd", 3.0, "nodelets", 50),
                                                   ("fsm_nodes", "fsm", 10.0, "nodes", 1)):
             out = os.path.join(cls.tmp, name)
             st = run_util.run_launch(LAUNCH, out, engine="1d", solver=solver, until=until,

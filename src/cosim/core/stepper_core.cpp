@@ -25,6 +25,8 @@ std::string validate(const StepperConfig& c) {
   if (!(c.timeout_s > 0.0) || !(c.startup_timeout_s > 0.0)) return w + "'timeout_s': must be > 0";
   if (std::isnan(c.until_s)) return w + "'until_s': NaN";
   if (!(c.clock_period_s >= 0.0 && c.clock_period_s <= 3600.0)) return w + "'clock_period_s': must be in [0, 3600] s";
+  if (!(c.clock_wall_period_s >= 0.0 && c.clock_wall_period_s <= 60.0))
+    return w + "'clock_wall_period_s': must be in [0, 60] s";
   if (c.window_steps < 1 || c.window_steps > 100000) return w + "'window_steps': must be in [1, 100000] base steps";
   std::set<std::string> seen;
   for (std::size_t g = 0; g < c.order.size(); ++g) {
@@ -56,12 +58,15 @@ double StepperCore::missionDuration_s() const {
 
 void StepperCore::begin(double wall_s) {
   wall0_ = phase_since_ = wall_s;
-  clockAt(0);
+  clockAt(0, wall_s);
 }
 
-void StepperCore::clockAt(Nanos t) {
-  if (last_clock_ >= 0 && t - last_clock_ < std::max<Nanos>(clock_period_ns_, 1)) return;
+void StepperCore::clockAt(Nanos t, double wall_s) {
+  if (last_clock_ >= 0 && (t - last_clock_ < std::max<Nanos>(clock_period_ns_, 1) ||
+                           wall_s - last_clock_wall_ < cfg_.clock_wall_period_s))
+    return;
   last_clock_ = t;
+  last_clock_wall_ = wall_s;
   tr_.publishClock(t);
 }
 
@@ -269,7 +274,7 @@ void StepperCore::update(double wall_s) {
   if (slowest != k_) {
     k_ = slowest;
     t_ = static_cast<Nanos>(slowest) * dt_ns_;
-    clockAt(t_);
+    clockAt(t_, wall_s);
     tr_.progress(false);
   }
 }
