@@ -41,9 +41,13 @@ template <class M>
 class Input : public InputBase {
  public:
   using Ptr = typename M::ConstPtr;
-  Input(ros::NodeHandle& nh, const std::string& topic, std::function<void()> on_arrival)
-      : InputBase(topic), on_arrival_(std::move(on_arrival)) {
-    sub_ = nh.subscribe<M>(topic, 1000, &Input::callback, this, ros::TransportHints().tcpNoDelay());
+  /// Reads `topic`; `subscribe_to` (if not empty) is the ROS topic its messages come from (the
+  /// recorder: the producer's observer lane, output.hpp) -- the input is still `topic`'s.
+  Input(ros::NodeHandle& nh, const std::string& topic, std::function<void()> on_arrival,
+        const std::string& subscribe_to = "")
+      : InputBase(topic), resolved_(nh.resolveName(topic)), on_arrival_(std::move(on_arrival)) {
+    sub_ = nh.subscribe<M>(subscribe_to.empty() ? topic : subscribe_to, 1000, &Input::callback, this,
+                           ros::TransportHints().tcpNoDelay());
   }
   bool has(const ros::Time& t) const override { return buf_.count(t) > 0; }
   /// The input of the step starting at t: the message stamped heldStamp(t) (present once the
@@ -51,13 +55,14 @@ class Input : public InputBase {
   const M& at(const ros::Time& t) const { return *buf_.at(heldStamp(t)); }
   void dropBefore(const ros::Time& t) override { buf_.erase(buf_.begin(), buf_.lower_bound(t)); }
   uint32_t numPublishers() const override { return sub_.getNumPublishers(); }
-  std::string resolvedTopic() const override { return sub_.getTopic(); }
+  std::string resolvedTopic() const override { return resolved_; }
 
  private:
   void callback(const Ptr& msg) {
     buf_[msg->header.stamp] = msg;
     on_arrival_();
   }
+  std::string resolved_;
   ros::Subscriber sub_;
   std::map<ros::Time, Ptr> buf_;
   std::function<void()> on_arrival_;

@@ -5,6 +5,10 @@
 // topic at t_end. So a 10 ms producer read only by 100 ms consumers sends every tenth state:
 // over TCP (mode:=nodes) each message sent is a write, a wake-up and a read per subscriber.
 // Tools that are not participants (rostopic echo, rviz) see the stamps the run reads.
+// Observer lane: each output also has a second topic, observerLane(topic), that only the
+// observers subscribe to (the recorder): it carries the stamps they read (the record period) and
+// the state at t_end, so a 10 ms topic read by another participant at every step no longer
+// reaches the recorder at every step too (mode:=nodes: a TCP delivery each).
 //
 // Publish a boost::shared_ptr (boost::make_shared<M>(msg)), not the message by value: roscpp
 // then hands intra-process subscribers (nodelets) the same object without serialising it and
@@ -19,16 +23,21 @@
 
 namespace hbt::cosim {
 
+/// The observer lane of an output topic (resolved name): "/twin/observe" + topic.
+inline std::string observerLane(const std::string& resolved_topic) { return "/twin/observe" + resolved_topic; }
+
 class Output {
  public:
   Output() = default;
-  Output(ros::Publisher pub, core::ParticipantCore* core, std::size_t index)
-      : pub_(std::move(pub)), core_(core), index_(index) {}
+  Output(ros::Publisher pub, ros::Publisher lane, core::ParticipantCore* core, std::size_t index)
+      : pub_(std::move(pub)), lane_(std::move(lane)), core_(core), index_(index) {}
 
   template <class M>
   void publish(const boost::shared_ptr<M>& m) const {
     const ros::Publisher& p = pub_;
-    core_->publish(index_, static_cast<core::Nanos>(m->header.stamp.toNSec()), [p, m] { p.publish(m); });
+    const ros::Publisher& l = lane_;
+    core_->publish(index_, static_cast<core::Nanos>(m->header.stamp.toNSec()), [p, m] { p.publish(m); },
+                   [l, m] { l.publish(m); });
   }
   template <class M>
   void publish(const M& m) const {
@@ -38,7 +47,7 @@ class Output {
   explicit operator bool() const { return core_ != nullptr; }
 
  private:
-  ros::Publisher pub_;
+  ros::Publisher pub_, lane_;
   core::ParticipantCore* core_ = nullptr;
   std::size_t index_ = 0;
 };

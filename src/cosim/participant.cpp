@@ -272,6 +272,7 @@ void Participant::onCommand(const StepCommand::ConstPtr& m) {
     c.table.reader_topic = m->reader_topic;
     c.table.reader_multiple = m->reader_multiple;
     c.table.reader_fresh = m->reader_fresh;
+    c.table.reader_observer = m->reader_observer;
     c.table.window = m->window;
     c.table.report_wall_s = m->report_wall_s;
   }

@@ -126,12 +126,15 @@ class Participant {
     addCustomInput(std::move(in));
     return ref;
   }
-  /// An output topic (output.hpp: sent only at the stamps some participant reads).
+  /// An output topic and its observer lane (output.hpp: sent only at the stamps some
+  /// participant reads).
   template <class M>
   Output addOutput(const std::string& topic) {
     ros::Publisher p = nh_.advertise<M>(topic, 1000);
+    ros::Publisher lane = nh_.advertise<M>(observerLane(p.getTopic()), 1000);
     outputs_.push_back(p);
-    return Output(p, &core_, core_.addOutput(p.getTopic()));
+    outputs_.push_back(lane);
+    return Output(p, lane, &core_, core_.addOutput(p.getTopic()));
   }
   /// The YAML file the parameters of this participant came from (param `config_file`).
   std::string configFile() const;

@@ -45,16 +45,16 @@ class TypedTopic : public RecordedTopic {
 class RawInput : public InputBase {
  public:
   using Ptr = topic_tools::ShapeShifter::ConstPtr;
-  RawInput(ros::NodeHandle& nh, const std::string& topic, std::function<void()> cb)
-      : InputBase(topic), cb_(std::move(cb)) {
-    sub_ = nh.subscribe<topic_tools::ShapeShifter>(topic, 1000, &RawInput::callback, this,
-                                                   ros::TransportHints().tcpNoDelay());
+  RawInput(ros::NodeHandle& nh, const std::string& topic, std::function<void()> cb, const std::string& subscribe_to)
+      : InputBase(topic), resolved_(nh.resolveName(topic)), cb_(std::move(cb)) {
+    sub_ = nh.subscribe<topic_tools::ShapeShifter>(subscribe_to.empty() ? topic : subscribe_to, 1000,
+                                                   &RawInput::callback, this, ros::TransportHints().tcpNoDelay());
   }
   bool has(const ros::Time& t) const override { return buf_.count(t) > 0; }
   const Ptr& at(const ros::Time& t) const { return buf_.at(heldStamp(t)); }
   void dropBefore(const ros::Time& t) override { buf_.erase(buf_.begin(), buf_.lower_bound(t)); }
   uint32_t numPublishers() const override { return sub_.getNumPublishers(); }
-  std::string resolvedTopic() const override { return sub_.getTopic(); }
+  std::string resolvedTopic() const override { return resolved_; }
 
  private:
   void callback(const Ptr& msg) {
@@ -69,6 +69,7 @@ class RawInput : public InputBase {
     buf_[ros::Time(sec, nsec)] = msg;
     cb_();
   }
+  std::string resolved_;
   ros::Subscriber sub_;
   std::map<ros::Time, Ptr> buf_;
   std::vector<uint8_t> bytes_;
@@ -89,8 +90,8 @@ class RawTopic : public RecordedTopic {
 
 template <class M>
 std::unique_ptr<RecordedTopic> typed(ros::NodeHandle& nh, const std::string& topic, std::function<void()> cb,
-                                     std::unique_ptr<InputBase>& input_out) {
-  auto in = std::make_unique<Input<M>>(nh, topic, std::move(cb));
+                                     const std::string& subscribe_to, std::unique_ptr<InputBase>& input_out) {
+  auto in = std::make_unique<Input<M>>(nh, topic, std::move(cb), subscribe_to);
   auto rec = std::make_unique<TypedTopic<M>>(in.get());
   input_out = std::move(in);
   return rec;
@@ -100,10 +101,11 @@ std::unique_ptr<RecordedTopic> typed(ros::NodeHandle& nh, const std::string& top
 
 std::unique_ptr<RecordedTopic> makeRecordedTopic(const std::string& datatype, ros::NodeHandle& nh,
                                                  const std::string& topic, std::function<void()> cb,
+                                                 const std::string& subscribe_to,
                                                  std::unique_ptr<InputBase>& input_out) {
   namespace m = hybrid_bus_twin;
   using Maker = std::unique_ptr<RecordedTopic> (*)(ros::NodeHandle&, const std::string&, std::function<void()>,
-                                                   std::unique_ptr<InputBase>&);
+                                                   const std::string&, std::unique_ptr<InputBase>&);
   static const std::map<std::string, Maker> makers = {
       {ros::message_traits::datatype<m::AftertreatmentState>(), &typed<m::AftertreatmentState>},
       {ros::message_traits::datatype<m::BatteryState>(), &typed<m::BatteryState>},
@@ -120,8 +122,8 @@ std::unique_ptr<RecordedTopic> makeRecordedTopic(const std::string& datatype, ro
       {ros::message_traits::datatype<m::VehicleToCooling>(), &typed<m::VehicleToCooling>},
   };
   const auto it = makers.find(datatype);
-  if (it != makers.end()) return it->second(nh, topic, std::move(cb), input_out);
-  auto in = std::make_unique<RawInput>(nh, topic, std::move(cb));
+  if (it != makers.end()) return it->second(nh, topic, std::move(cb), subscribe_to, input_out);
+  auto in = std::make_unique<RawInput>(nh, topic, std::move(cb), subscribe_to);
   auto rec = std::make_unique<RawTopic>(in.get());
   input_out = std::move(in);
   return rec;

@@ -29,10 +29,13 @@ class RecordedTopic {
 };
 
 /// `datatype` as the master reports it (e.g. "hybrid_bus_twin/EngineState"; "" = unknown): a
-/// typed topic for the twin's messages, else type-erased. The returned object's input() must be
-/// handed to Participant::addCustomInput (ownership), the RecordedTopic kept by the recorder.
+/// typed topic for the twin's messages, else type-erased. `subscribe_to`: the ROS topic the
+/// messages of `topic` come from ("" = `topic`; a participant's output: its observer lane,
+/// output.hpp). The returned object's input() must be handed to Participant::addCustomInput
+/// (ownership), the RecordedTopic kept by the recorder.
 std::unique_ptr<RecordedTopic> makeRecordedTopic(const std::string& datatype, ros::NodeHandle& nh,
                                                  const std::string& topic, std::function<void()> on_arrival,
+                                                 const std::string& subscribe_to,
                                                  std::unique_ptr<InputBase>& input_out);
 
 }  // namespace hbt::cosim

@@ -13,12 +13,11 @@ namespace hbt::cosim {
 
 void Recorder::configure() {
   std::string bag_file;
-  std::vector<std::string> topics;
   const std::string where = "recorder parameters (launch file)";
   if (!pnh_.getParam("bag_file", bag_file) || bag_file.empty())
     throw InputError(where, "bag_file", "missing");
   record_all_ = !pnh_.hasParam("topics");
-  if (!record_all_ && (!pnh_.getParam("topics", topics) || topics.empty()))
+  if (!record_all_ && (!pnh_.getParam("topics", listed_) || listed_.empty()))
     throw InputError(where, "topics", "not a list of topic names, or empty (leave it out to record every output)");
   double period_s = 0.0;
   pnh_.param("record_period_s", period_s, 0.0);
@@ -34,7 +33,6 @@ void Recorder::configure() {
   } catch (const std::exception& e) {
     throw InputError(where, "bag_file", std::string("cannot open '") + bag_file + "': " + e.what());
   }
-  for (const auto& t : topics) addTopic(t, "");  // types not known yet: recorded type-erased
   std::string diag_file;
   if (pnh_.getParam("diagnostics_bag_file", diag_file) && !diag_file.empty()) {
     std::vector<std::string> from;
@@ -59,9 +57,9 @@ void Recorder::configure() {
   }
 }
 
-void Recorder::addTopic(const std::string& topic, const std::string& datatype) {
+void Recorder::addTopic(const std::string& topic, const std::string& datatype, const std::string& subscribe_to) {
   std::unique_ptr<InputBase> in;
-  topics_.push_back(makeRecordedTopic(datatype, nh_, topic, arrivalCallback(), in));
+  topics_.push_back(makeRecordedTopic(datatype, nh_, topic, arrivalCallback(), subscribe_to, in));
   addCustomInput(std::move(in));
   // written in a fixed order, whatever the order of discovery: sorted by name
   std::sort(topics_.begin(), topics_.end(), [](const auto& a, const auto& b) { return a->topic() < b->topic(); });
@@ -74,9 +72,11 @@ void Recorder::topicsAnnounced(const std::vector<std::string>& topics,
       if (n != name()) diag_waiting_.insert(n);
     diag_from_table_ = true;
   }
-  if (!record_all_) return;
+  // the topics to record: every announced output, or the list given; subscribed here (the
+  // first SYNC), where it is known which are participants' outputs: those are read from their
+  // observer lane (output.hpp), anything else from the topic itself
   std::vector<std::pair<std::string, std::string>> missing;  // topic, resolved name
-  for (const auto& t : topics) {
+  for (const auto& t : record_all_ ? topics : listed_) {
     const std::string resolved = ros::names::resolve(nh_.getNamespace(), t);
     if (std::none_of(topics_.begin(), topics_.end(),
                      [&](const auto& r) { return r->input()->resolvedTopic() == resolved; }))
@@ -89,7 +89,9 @@ void Recorder::topicsAnnounced(const std::vector<std::string>& topics,
     std::string datatype;
     for (const auto& info : advertised)
       if (info.name == resolved) datatype = info.datatype;
-    addTopic(t, datatype);
+    const bool output = std::find(topics.begin(), topics.end(), resolved) != topics.end() ||
+                        std::find(topics.begin(), topics.end(), t) != topics.end();
+    addTopic(t, datatype, output ? observerLane(resolved) : "");
   }
 }
 

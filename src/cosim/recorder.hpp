@@ -11,7 +11,9 @@
 //
 // Parameters (private): bag_file [path], topics [list of topic names; absent = every output
 // topic the participants announced: learnt from the stepper's SYNC table, so a new participant
-// is recorded without touching the launch file], record_period_s [s]
+// is recorded without touching the launch file; either way subscribed at the first SYNC, a
+// participant's output on its observer lane (output.hpp: only the stamps the recorder reads
+// reach it)], record_period_s [s]
 // (0 = every macro step; otherwise the states stamped at multiples of the period are written,
 // always including t = 0 and the final state).
 //
@@ -57,7 +59,7 @@ class Recorder : public Participant {
 
  private:
   void writeAt(const ros::Time& t);
-  void addTopic(const std::string& topic, const std::string& datatype);
+  void addTopic(const std::string& topic, const std::string& datatype, const std::string& subscribe_to);
   void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& m);
   void writeDiagnostics(const diagnostic_msgs::DiagnosticArray& m);
   bool diagnosticsComplete() const;
@@ -75,6 +77,7 @@ class Recorder : public Participant {
   uint64_t period_ns_ = 0;
   bool wrote_any_ = false;
   bool record_all_ = false;  // no `topics` parameter: record every announced output
+  std::vector<std::string> listed_;  // the `topics` parameter (subscribed at the first SYNC)
 };
 
 }  // namespace hbt::cosim

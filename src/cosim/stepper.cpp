@@ -139,6 +139,7 @@ void Stepper::sendCommand(const core::Command& c) {
   m.reader_topic = c.table.reader_topic;
   m.reader_multiple = c.table.reader_multiple;
   m.reader_fresh = c.table.reader_fresh;
+  m.reader_observer = c.table.reader_observer;
   m.window = c.table.window;
   m.report_wall_s = c.table.report_wall_s;
   cmd_pub_.publish(boost::make_shared<StepCommand>(m));

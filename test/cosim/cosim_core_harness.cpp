@@ -3,11 +3,11 @@
 namespace hbt::cosim::core::testing {
 
 FakeParticipant::FakeParticipant(Bus& bus, std::string name, std::vector<std::string> in,
-                                 std::vector<std::string> out, Faults f)
-    : core(std::move(name), *this), outputs(std::move(out)), faults(std::move(f)), bus_(bus) {
+                                 std::vector<std::string> out, Faults f, bool obs)
+    : core(std::move(name), *this), outputs(std::move(out)), faults(std::move(f)), observer(obs), bus_(bus) {
   for (const auto& topic : in) {
     inputs.push_back(std::make_unique<FakeInput>(topic, [this] { core.onArrival(); }));
-    bus.subscribers[topic].push_back(inputs.back().get());
+    bus.subscribers[(observer ? "lane:" : "") + topic].push_back(inputs.back().get());
   }
 }
 
@@ -20,7 +20,7 @@ void FakeParticipant::topicsAnnounced(const std::vector<std::string>& topics,
     for (const auto& in : inputs) known = known || in->resolvedTopic() == topic;
     if (known) continue;
     inputs.push_back(std::make_unique<FakeInput>(topic, [this] { core.onArrival(); }));
-    bus_.subscribers[topic].push_back(inputs.back().get());
+    bus_.subscribers[(observer ? "lane:" : "") + topic].push_back(inputs.back().get());
     core.addInput(inputs.back().get());
   }
 }
@@ -43,10 +43,16 @@ void FakeParticipant::publishOutputs(Nanos t) {
   published.push_back(t);
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const std::string topic = outputs[i];
-    core.publish(i, t, [this, topic, t] {
-      sent[topic].push_back(t);
-      for (FakeInput* in : bus_.subscribers[topic]) bus_.postTopic([in, t] { in->deliver(t, t); });
-    });
+    core.publish(
+        i, t,
+        [this, topic, t] {
+          sent[topic].push_back(t);
+          for (FakeInput* in : bus_.subscribers[topic]) bus_.postTopic([in, t] { in->deliver(t, t); });
+        },
+        [this, topic, t] {
+          sent_lane[topic].push_back(t);
+          for (FakeInput* in : bus_.subscribers["lane:" + topic]) bus_.postTopic([in, t] { in->deliver(t, t); });
+        });
   }
 }
 
@@ -107,14 +113,13 @@ void FakeParticipant::command(const Command& c) {
 }
 
 FakeParticipant& Bus::add(const std::string& name, std::vector<std::string> in,
-                          std::vector<std::string> out, Faults f) {
-  parts.push_back(std::make_unique<FakeParticipant>(*this, name, std::move(in), std::move(out), f));
+                          std::vector<std::string> out, Faults f, bool observer) {
+  parts.push_back(std::make_unique<FakeParticipant>(*this, name, std::move(in), std::move(out), f, observer));
   return *parts.back();
 }
 
 FakeParticipant& Bus::addRecorder(std::vector<std::string> topics, double period_s) {
-  FakeParticipant& r = add("recorder", std::move(topics), {});
-  r.observer = true;
+  FakeParticipant& r = add("recorder", std::move(topics), {}, {}, true);
   if (period_s > 0.0)
     r.on_configure = [period_s](ParticipantCore& c) {
       c.requestPeriod({period_s, "recorder parameters (launch file)", "record_period_s", true});

@@ -58,15 +58,17 @@ struct StepLog {
 
 class FakeParticipant : public ParticipantHooks {
  public:
+  /// An observer (the recorder) subscribes to the observer lanes of its topics ("lane:" + topic).
   FakeParticipant(Bus& bus, std::string name, std::vector<std::string> inputs,
-                  std::vector<std::string> outputs, Faults f);
+                  std::vector<std::string> outputs, Faults f, bool observer = false);
   ParticipantCore core;
   std::vector<std::unique_ptr<FakeInput>> inputs;
   std::vector<std::string> outputs;
   Faults faults;
   std::vector<StepLog> steps;
   std::vector<Nanos> published;     // stamps of publishOutputs
-  std::map<std::string, std::vector<Nanos>> sent;  // topic -> stamps actually sent (read by someone)
+  std::map<std::string, std::vector<Nanos>> sent;  // topic -> stamps sent on the topic
+  std::map<std::string, std::vector<Nanos>> sent_lane;  // topic -> stamps sent on its observer lane
   std::vector<Nanos> closed_at;     // close(t_end)
   std::vector<bool> closed_aborted;
   std::vector<StepLog> records;     // observer: what was written (step or close)
@@ -116,7 +118,7 @@ class Bus : public StepperTransport {
   double completed_wall = -1.0;
 
   FakeParticipant& add(const std::string& name, std::vector<std::string> in,
-                       std::vector<std::string> out, Faults f = {});
+                       std::vector<std::string> out, Faults f = {}, bool observer = false);
   /// A recorder-like observer of `topics`, period request `period_s` (0 = base) with fallback.
   FakeParticipant& addRecorder(std::vector<std::string> topics, double period_s = 0.0);
   FakeParticipant& get(const std::string& name);

@@ -284,9 +284,11 @@ TEST(CosimCore, MultiRateHeldValues) {
     EXPECT_EQ(r.records[i].read.at("/slow/out"), t / (30 * MS) * 30 * MS) << i;
   }
   EXPECT_EQ(bus.stepper->peers().at("recorder").multiple, 2u);
-  // fast's output is read by slow (every 3rd stamp) and the recorder (every 2nd): only those sent
+  // fast's output is read by slow (every 3rd stamp) and the recorder (every 2nd): only those are
+  // sent on its topic, and only the recorder's on its observer lane
   EXPECT_EQ(fast.sent.at("/fast/out"), (std::vector<Nanos>{0, 20 * MS, 30 * MS, 40 * MS, 60 * MS,
                                                           80 * MS, 90 * MS, 100 * MS}));
+  EXPECT_EQ(fast.sent_lane.at("/fast/out"), (std::vector<Nanos>{0, 20 * MS, 40 * MS, 60 * MS, 80 * MS, 100 * MS}));
   EXPECT_EQ(fast.published.size(), 11u);  // built at every step
 }
 
@@ -359,9 +361,10 @@ TEST(CosimCore, OrderedGroupsWithMultiRate) {
   const auto& fast = bus.get("fast");
   for (std::size_t k = 0; k < 9; ++k)
     EXPECT_EQ(fast.steps[k].read.at("/slow/out"), Nanos(k) / 3 * 30 * MS);
-  // slow reads fast's fresh value at 10, 40, 70 ms: nothing else of fast is sent, but its state
-  // at t_end (for an observer's last record)
-  EXPECT_EQ(fast.sent.at("/fast/out"), (std::vector<Nanos>{10 * MS, 40 * MS, 70 * MS, 90 * MS}));
+  // slow reads fast's fresh value at 10, 40, 70 ms: nothing else of fast is sent on its topic; its
+  // state at t_end goes to the observer lane (for an observer's last record)
+  EXPECT_EQ(fast.sent.at("/fast/out"), (std::vector<Nanos>{10 * MS, 40 * MS, 70 * MS}));
+  EXPECT_EQ(fast.sent_lane.at("/fast/out"), (std::vector<Nanos>{90 * MS}));
 }
 
 TEST(CosimCore, OrderValidation) {
@@ -467,17 +470,20 @@ TEST(CosimCore, OutputsSentOnlyWhereReadAndTheEndStateKept) {
   EXPECT_EQ(bus->stepper->time(), 70 * MS);
   const auto& fast = bus->get("fast");
   EXPECT_EQ(fast.published.size(), 8u);  // 0 .. 70 ms: built at every step
-  EXPECT_EQ(fast.sent.at("/fast/out"), (std::vector<Nanos>{0, 50 * MS, 70 * MS}));
+  EXPECT_EQ(fast.sent.at("/fast/out"), (std::vector<Nanos>{0, 50 * MS}));
+  EXPECT_EQ(fast.sent_lane.at("/fast/out"), (std::vector<Nanos>{0, 50 * MS, 70 * MS}));  // + t_end
   const auto& r = bus->get("recorder");
   ASSERT_EQ(r.records.size(), 3u);
   EXPECT_EQ(r.records[2].t, 70 * MS);
   EXPECT_EQ(r.records[2].read.at("/fast/out"), 70 * MS);
   EXPECT_EQ(r.records[2].read.at("/slow/out"), 50 * MS);
-  EXPECT_EQ(fast.core.sent() + fast.core.deferred(), 8u + 1u);  // the end one counted twice
+  EXPECT_EQ(fast.core.sent(), 2u + 3u);  // topic + lane
+  EXPECT_EQ(fast.core.deferred(), 6u);   // 10, 20, 30, 40, 60, 70 ms kept back; 70 sent at FINISH
   // a recorder at every base step reads every stamp: everything is sent
   auto all = run(0.0);
   ASSERT_TRUE(all->completed);
   EXPECT_EQ(all->get("fast").sent.at("/fast/out").size(), 8u);
+  EXPECT_EQ(all->get("fast").sent_lane.at("/fast/out").size(), 8u);
   EXPECT_EQ(all->get("recorder").records.size(), 8u);
 }
 
@@ -562,4 +568,25 @@ TEST(CosimCore, TheReportWindowChangesNeitherReadsNorRecordsOnlyTheCommands) {
   EXPECT_GT(grants[0], 100u);      // W = 1: about one per base step
   EXPECT_LE(grants[2], 2u * 10u + 2u);  // W = 10: about two per window
   EXPECT_LE(grants[3], 3u);
+}
+
+TEST(CosimCore, TheRecorderGetsOnlyItsStampsOnTheObserverLane) {
+  // a and b read each other at every 10 ms step; the recorder every 50 ms: the topics carry every
+  // stamp (to the other participant), the lanes every fifth and t_end -- the recorder receives
+  // nothing else, and records exactly what a recorder reading the topics would
+  Bus bus;
+  addPair(bus);
+  bus.addRecorder({"/a/out", "/b/out"}, 0.05);
+  bus.run(config({"a", "b", "recorder"}, 0.23));
+  ASSERT_TRUE(bus.completed);
+  EXPECT_FALSE(bus.stepper->aborted()) << bus.stepper->reason();
+  const auto& a = bus.get("a");
+  EXPECT_EQ(a.sent.at("/a/out").size(), 24u);  // 0 .. 230 ms
+  EXPECT_EQ(a.sent_lane.at("/a/out"), (std::vector<Nanos>{0, 50 * MS, 100 * MS, 150 * MS, 200 * MS, 230 * MS}));
+  const auto& r = bus.get("recorder");
+  ASSERT_EQ(r.records.size(), 6u);
+  for (const auto& rec : r.records) {
+    EXPECT_EQ(rec.read.at("/a/out"), rec.t);
+    EXPECT_EQ(rec.read.at("/b/out"), rec.t);
+  }
 }

@@ -129,7 +129,8 @@ void ParticipantCore::applyTable(const Table& tb) {
       const uint32_t i = tb.reader_topic[j];
       if (i < tb.topics.size() && tb.topics[i] == o.topic && j < tb.reader_multiple.size() &&
           j < tb.reader_fresh.size())
-        o.readers.push_back(Reader{tb.reader_multiple[j], tb.reader_fresh[j] != 0});
+        o.readers.push_back(Reader{tb.reader_multiple[j], tb.reader_fresh[j] != 0,
+                                   j < tb.reader_observer.size() && tb.reader_observer[j] != 0});
     }
   }
   window_ = std::max<uint32_t>(1, tb.window);
@@ -137,21 +138,36 @@ void ParticipantCore::applyTable(const Table& tb) {
 }
 
 bool ParticipantCore::outputRead(std::size_t index, Nanos stamp) const {
+  return outputRead(index, stamp, false) || outputRead(index, stamp, true);
+}
+
+bool ParticipantCore::outputRead(std::size_t index, Nanos stamp, bool observers) const {
   if (!started_ || base_ns_ <= 0 || index >= outputs_.size()) return true;
   const uint64_t s = static_cast<uint64_t>(stamp / base_ns_);
   for (const Reader& r : outputs_[index].readers)
-    if (readsStamp(multiple_, r.multiple, r.fresh, s)) return true;
+    if (r.observer == observers && readsStamp(multiple_, r.multiple, r.fresh, s)) return true;
   return false;
 }
 
-void ParticipantCore::publish(std::size_t index, Nanos stamp, std::function<void()> send) {
-  if (outputRead(index, stamp)) {
+void ParticipantCore::publish(std::size_t index, Nanos stamp, std::function<void()> send,
+                              std::function<void()> send_to_observers) {
+  const bool by_observer = outputRead(index, stamp, true);
+  const bool by_other = outputRead(index, stamp, false);
+  if (by_observer || by_other) {
     ++sent_;
     send();
+  }
+  if (!send_to_observers) {  // one topic for all: kept only if nobody read it
+    if (by_observer || by_other) return;
+    send_to_observers = std::move(send);
+  } else if (by_observer) {
+    ++sent_;
+    send_to_observers();
     return;
   }
+  // an observer may read it at t_end (on the lane if there is one)
   ++deferred_;
-  outputs_[index].kept.push_back(Kept{static_cast<uint64_t>(stamp / base_ns_), std::move(send)});
+  outputs_[index].kept.push_back(Kept{static_cast<uint64_t>(stamp / base_ns_), std::move(send_to_observers)});
 }
 
 void ParticipantCore::trimKept(uint64_t confirmed) {

@@ -22,10 +22,13 @@
 //   FINISH k_end     publishes the deferred outputs an observer reads at t_end, then
 //                    close(t_end, false) once readyToClose(t_end); CLOSED
 //   ABORT            close(t_end, true) at once; CLOSED
-// Outputs: publish(output, stamp, send) sends a message only if some participant of the run
-// reads that stamp (readsStamp() over the output's readers from the START table); the others
-// are kept until the end of the run can no longer be at their stamp (GRANT's L), because the
-// observers read every topic at t_end.
+// Outputs: publish(output, stamp, send, send_to_observers) sends a message only if some
+// participant of the run reads that stamp (readsStamp() over the output's readers from the
+// START table). With an observer lane (send_to_observers: a second topic that only the
+// observers -- the recorder -- subscribe to) the observers get only their own stamps there, and
+// the output's topic carries the stamps anyone reads (observers included, for tools outside the
+// run); without one, the topic carries them all. The observers' state at t_end is kept until the
+// end of the run can no longer be at its stamp (GRANT's L).
 // Any exception of the model becomes ERROR "name: step k (t = ...) failed: what".
 #pragma once
 #include <deque>
@@ -101,11 +104,15 @@ class ParticipantCore {
   void setMissionDuration(double s) { mission_duration_s_ = s; }
 
   // --- publishing (from publishOutputs) ---
-  /// Sends output `index` stamped `stamp` now (send()) if a reader reads that stamp, else keeps
-  /// send() until the end of the run is known (an observer may read it at t_end).
-  void publish(std::size_t index, Nanos stamp, std::function<void()> send);
-  /// True if a reader of the run reads output `index` stamped `stamp` (always true before START).
+  /// Sends output `index` stamped `stamp` (see the header comment): send() on its topic if any
+  /// reader reads that stamp; send_to_observers() (if given: the observer lane) if an observer
+  /// does. What the observers may still read at t_end is kept until the end is known.
+  void publish(std::size_t index, Nanos stamp, std::function<void()> send,
+               std::function<void()> send_to_observers = {});
+  /// True if a reader of the run reads output `index` stamped `stamp` (always true before START);
+  /// observers: only readers that are observers (false: only the others).
   bool outputRead(std::size_t index, Nanos stamp) const;
+  bool outputRead(std::size_t index, Nanos stamp, bool observers) const;
 
   // --- events ---
   void start();
@@ -132,7 +139,7 @@ class ParticipantCore {
  private:
   struct Reader {
     uint32_t multiple = 1;
-    bool fresh = false;
+    bool fresh = false, observer = false;
   };
   struct Kept {
     uint64_t s;  // base step of the stamp

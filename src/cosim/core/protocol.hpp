@@ -42,9 +42,10 @@ struct Table {
   std::vector<uint32_t> topic_multiple, topic_group;
   std::vector<std::string> participants;
   std::vector<uint32_t> participant_multiple, participant_group;
-  /// Readers (parallel): topic index, the reader's macro step multiple, fresh (Gauss-Seidel) read.
+  /// Readers (parallel): topic index, the reader's macro step multiple, fresh (Gauss-Seidel)
+  /// read, observer (the recorder: reads the producer's observer lane, see participant_core.hpp).
   std::vector<uint32_t> reader_topic, reader_multiple;
-  std::vector<uint8_t> reader_fresh;
+  std::vector<uint8_t> reader_fresh, reader_observer;
   uint32_t window = 1;        ///< W: report at every multiple of W base steps
   double report_wall_s = 0.25;  ///< and at least this often [s wall] while stepping
 };

@@ -221,6 +221,7 @@ void StepperCore::fillTable(Table& t, bool readers) const {
       t.reader_topic.push_back(static_cast<uint32_t>(it->second));
       t.reader_multiple.push_back(c.multiple);
       t.reader_fresh.push_back(!c.observer && t.topic_group[it->second] < c.group);
+      t.reader_observer.push_back(c.observer);
     }
   }
 }
