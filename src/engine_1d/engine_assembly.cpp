@@ -31,8 +31,8 @@ EngineAssembly::EngineAssembly(const Engine1DParams& p, const turbo::Turbocharge
     : P_(p),
       tc_(tc),
       shaft_(tc.shaft),
-      intake_(gasdyn::PerfectGas{p.turbo.compressor_options.gamma, p.turbo.air_gas_constant}),
-      exhaust_(gasdyn::PerfectGas{p.turbo.exhaust_gamma, p.turbo.exhaust_gas_constant}),
+      intake_(PerfectGas{p.turbo.compressor_options.gamma, p.turbo.air_gas_constant}),
+      exhaust_(PerfectGas{p.turbo.exhaust_gamma, p.turbo.exhaust_gas_constant}),
       comp_map_(maps.compressor),
       turb_map_(maps.turbine) {
   cp_in_ = intake_.gas().cp();
@@ -223,7 +223,7 @@ double EngineAssembly::cylinderDt() const {
   // valve areas; c from the exhaust gas constants (gamma 1.33: c within ~3 % of the mixture's).
   const double cfl = P_.engine.coupling_cylinder_cfl;
   if (!(cfl > 0.0)) return std::numeric_limits<double>::infinity();
-  const gasdyn::PerfectGas& g = exhaust_.gas();
+  const PerfectGas& g = exhaust_.gas();
   double dt = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 6; ++k) {
     double fi, ri, fe, re;

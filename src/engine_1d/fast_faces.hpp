@@ -10,14 +10,14 @@ namespace hbt::engine1d {
 
 /// Outflow face with demand(p0_face, T0_face) [kg/s]; `guess` = outflow velocity of the last call.
 template <class Demand>
-gasdyn::FaceState warmOutflowFace(const gasdyn::PerfectGas& gas, const gasdyn::EndState& s,
+gasdyn::FaceState warmOutflowFace(const PerfectGas& gas, const gasdyn::EndState& s,
                                   Demand demand, double& guess) {
   return gasdyn::warmDemandOutflowFace(gas, s, demand, guess);
 }
 
 /// Inflow face with demand(p_b) -> Supply{mdot, T0}; `guess` = face velocity of the last call.
 template <class Demand>
-gasdyn::FaceState warmInflowFace(const gasdyn::PerfectGas& gas, const gasdyn::EndState& s,
+gasdyn::FaceState warmInflowFace(const PerfectGas& gas, const gasdyn::EndState& s,
                                  Demand demand, double& guess) {
   return gasdyn::warmDemandInflowFace(gas, s, demand, guess);
 }

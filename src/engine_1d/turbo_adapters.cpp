@@ -64,7 +64,7 @@ TurbineFlowMap::TurbineFlowMap(const turbo::TurbineEntry& e, const turbo::Wasteg
                 [&](double n, double er) { return m.at(n, er).mfp; });
   eta_ = Grid2D(0.0, n_max, n_speed, 1.0, er_max_, n_er,
                 [&](double n, double er) { return m.at(n, er).eta; });
-  const turbo::Gas& g = m.gas();
+  const PerfectGas& g = m.gas();
   psi_.resize(kPsiPoints);
   for (int i = 0; i < kPsiPoints; ++i) psi_[i] = g.psi(static_cast<double>(i) / (kPsiPoints - 1));
   // Cd A_max of the wastegate from its own law at a choked reference state (p0 = 1e5 Pa, T0 = 1 K):

@@ -1,14 +1,17 @@
-// Perfect-gas properties and the isentropic nozzle (orifice) relations shared by all boundaries.
+// The isentropic nozzle (orifice) relations shared by all boundaries, on hbt::PerfectGas
+// (common/perfect_gas.hpp: p = rho R T, cp, cv, c, pi*, the choked flow function), and ConstPow.
 //
-//   p = rho R T  [Pa],  cp = gamma R/(gamma-1), cv = R/(gamma-1)  [J/(kg K)],  c = sqrt(gamma R T) [m/s]
 //   Stagnation state of a moving gas: T0 = T + u^2/(2 cp),  p0 = p (T0/T)^(gamma/(gamma-1)).
 //   Nozzle mass flow [kg/s] from upstream stagnation (p0 [Pa], T0 [K]) through the effective
 //   (= discharge coefficient x geometric) area A [m^2] to the downstream static pressure p [Pa]:
 //     pr  = max(p/p0, pr*),  pr* = (2/(gamma+1))^(gamma/(gamma-1))   (choked below pr*)
 //     mdot = A p0 / sqrt(R T0) * sqrt( 2 gamma/(gamma-1) (pr^(2/gamma) - pr^((gamma+1)/gamma)) )
 //   Choked: mdot* = A p0/sqrt(R T0) sqrt(gamma) (2/(gamma+1))^((gamma+1)/(2(gamma-1))).
+// One power (ConstPow) per subsonic call, where PerfectGas::psi takes three std::pow.
 #pragma once
 #include <cmath>
+
+#include "common/perfect_gas.hpp"
 
 namespace hbt::gasdyn {
 
@@ -37,22 +40,6 @@ class ConstPow {
  private:
   double e_;
   int half_steps_ = -1;  // 2e if e is a multiple of 1/2 in [0, 8], else -1
-};
-
-struct PerfectGas {
-  double gamma = 1.4;  // ratio of specific heats [-]
-  double R = 287.0;    // specific gas constant [J/(kg K)]
-
-  double cp() const { return gamma * R / (gamma - 1.0); }
-  double cv() const { return R / (gamma - 1.0); }
-  double soundSpeed(double T) const { return std::sqrt(gamma * R * T); }
-  double criticalPressureRatio() const {
-    return std::pow(2.0 / (gamma + 1.0), gamma / (gamma - 1.0));
-  }
-  /// Choked flow function sqrt(gamma) (2/(gamma+1))^((gamma+1)/(2(gamma-1))) [-].
-  double chokedFlowFunction() const {
-    return std::sqrt(gamma) * std::pow(2.0 / (gamma + 1.0), (gamma + 1.0) / (2.0 * (gamma - 1.0)));
-  }
 };
 
 /// Nozzle flow function from pr = p/p0 < 1 and t = pr^((gamma-1)/gamma) given by the caller

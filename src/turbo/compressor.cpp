@@ -7,7 +7,7 @@
 
 namespace hbt::turbo {
 
-Compressor::Compressor(CompressorMap map, double p_ref_Pa, double T_ref_K, Gas gas)
+Compressor::Compressor(CompressorMap map, double p_ref_Pa, double T_ref_K, PerfectGas gas)
     : map_(std::move(map)), p_ref_(p_ref_Pa), t_ref_(T_ref_K), gas_(gas) {}
 
 CompressorState Compressor::evaluate(double p_in, double T_in, double p_out, double w) const {

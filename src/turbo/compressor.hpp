@@ -11,8 +11,8 @@
 //   τ   = P/ω                                  absorbed torque [N·m] (0 for ω < 1 rad/s)
 // Cheap: one map look-up, no allocation; safe to call every gas-dynamic time step.
 #pragma once
+#include "common/perfect_gas.hpp"
 #include "turbo/compressor_map.hpp"
-#include "turbo/gas.hpp"
 
 namespace hbt::turbo {
 
@@ -32,7 +32,7 @@ class Compressor {
  public:
   Compressor() = default;
   /// `map` must already be scaled; p_ref [Pa], T_ref [K]: map reference state; gas: air.
-  Compressor(CompressorMap map, double p_ref_Pa, double T_ref_K, Gas gas = {});
+  Compressor(CompressorMap map, double p_ref_Pa, double T_ref_K, PerfectGas gas = {});
 
   CompressorState evaluate(double p_in_Pa, double T_in_K, double p_out_Pa,
                            double speed_rad_s) const;
@@ -51,14 +51,14 @@ class Compressor {
   }
 
   const CompressorMap& map() const { return map_; }
-  const Gas& gas() const { return gas_; }
+  const PerfectGas& gas() const { return gas_; }
   double pRef() const { return p_ref_; }
   double tRef() const { return t_ref_; }
 
  private:
   CompressorMap map_;
   double p_ref_ = 100000.0, t_ref_ = 298.0;
-  Gas gas_;
+  PerfectGas gas_;
 };
 
 }  // namespace hbt::turbo

@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "turbo/gas.hpp"
+#include "common/perfect_gas.hpp"
 
 namespace hbt::turbo {
 
@@ -95,7 +95,7 @@ class CompressorMap {
 
   std::string source_;
   CompressorMapOptions opt_;
-  Gas gas_;
+  PerfectGas gas_;
   std::vector<CompressorLine> lines_;
   std::vector<double> beta_;              // union grid [M]
   std::vector<double> speed_;             // [L]

@@ -13,7 +13,7 @@ TurbineState TurbineEntry::evaluate(double p_in, double T_in, double p_out, doub
   T_in = std::max(T_in, 1.0);
   p_out = std::max(p_out, 1.0);
   w = std::max(w, 0.0);
-  const Gas& g = map_.gas();
+  const PerfectGas& g = map_.gas();
   const double sqT = std::sqrt(T_in);
   s.reduced_speed = units::radpsToRpm(w) / sqT;
   s.expansion_ratio = p_in / p_out;

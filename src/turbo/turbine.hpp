@@ -13,7 +13,7 @@
 //   ṁ_wg = C_d · a · A_max · p_3/√(R T_3) · ψ(p_4/p_3),  a = opening ∈ [0,1] from the controller.
 // All calls: no allocation, no NaN, flows ≥ 0.
 #pragma once
-#include "turbo/gas.hpp"
+#include "common/perfect_gas.hpp"
 #include "turbo/turbine_map.hpp"
 
 namespace hbt::turbo {
@@ -55,7 +55,8 @@ class Wastegate {
  public:
   Wastegate() = default;
   /// cd [-], max_area [m²], gas: exhaust.
-  Wastegate(double cd, double max_area_m2, Gas gas) : cd_(cd), a_max_(max_area_m2), gas_(gas) {}
+  Wastegate(double cd, double max_area_m2, PerfectGas gas)
+      : cd_(cd), a_max_(max_area_m2), gas_(gas) {}
   /// opening ∈ [0,1] (clamped); area = opening × A_max [m²].
   double massFlow(double p_in_Pa, double T_in_K, double p_out_Pa, double opening) const;
   double area(double opening) const;
@@ -63,7 +64,7 @@ class Wastegate {
 
  private:
   double cd_ = 0.8, a_max_ = 0.0;
-  Gas gas_;
+  PerfectGas gas_;
 };
 
 struct TwinEntryState {

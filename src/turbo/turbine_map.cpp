@@ -26,7 +26,7 @@ double logG(double x) {
 
 }  // namespace
 
-TurbineMap TurbineMap::read(const std::string& path, const TurbineMapFormat& fmt, Gas gas) {
+TurbineMap TurbineMap::read(const std::string& path, const TurbineMapFormat& fmt, PerfectGas gas) {
   const CsvTable t = CsvTable::read(path);
   const auto& n = t.column(fmt.col_speed);
   const auto& mfp = t.column(fmt.col_mfp);
@@ -45,7 +45,7 @@ TurbineMap TurbineMap::read(const std::string& path, const TurbineMapFormat& fmt
   return TurbineMap(std::move(lines), gas, path, fmt);
 }
 
-TurbineMap::TurbineMap(std::vector<TurbineLine> lines, Gas gas, const std::string& source,
+TurbineMap::TurbineMap(std::vector<TurbineLine> lines, PerfectGas gas, const std::string& source,
                        const TurbineMapFormat& fmt)
     : source_(source), gas_(gas), lines_(std::move(lines)) {
   build(fmt);

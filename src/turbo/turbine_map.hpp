@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "turbo/gas.hpp"
+#include "common/perfect_gas.hpp"
 
 namespace hbt::turbo {
 
@@ -54,8 +54,8 @@ class TurbineMap {
 
   TurbineMap() = default;
   static TurbineMap read(const std::string& path, const TurbineMapFormat& fmt = {},
-                         Gas gas = {1.33, 287.0});
-  TurbineMap(std::vector<TurbineLine> lines, Gas gas, const std::string& source,
+                         PerfectGas gas = {1.33, 287.0});
+  TurbineMap(std::vector<TurbineLine> lines, PerfectGas gas, const std::string& source,
              const TurbineMapFormat& fmt = {});
 
   /// Φ × flow_factor; N_r × speed_factor (geometric similarity: speed_factor = 1/√flow_factor).
@@ -69,7 +69,7 @@ class TurbineMap {
   double etaCap() const { return eta_cap_; }     // max measured η
   const std::vector<TurbineLine>& lines() const { return lines_; }
   const std::string& source() const { return source_; }
-  const Gas& gas() const { return gas_; }
+  const PerfectGas& gas() const { return gas_; }
 
  private:
   double lineMfp(int i, double er, double psi_q) const;
@@ -78,7 +78,7 @@ class TurbineMap {
   void build(const TurbineMapFormat& fmt);
 
   std::string source_;
-  Gas gas_;
+  PerfectGas gas_;
   std::vector<TurbineLine> lines_;
   std::vector<double> speed_;
   std::vector<double> psi_first_, psi_last_;   // ψ(1/ER) at the line ends

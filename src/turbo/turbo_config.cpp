@@ -122,10 +122,10 @@ Turbocharger buildTurbocharger(const TurboConfig& cfg, const std::string& base_d
                                          cfg.compressor_format, cfg.compressor_options);
   t.scaling = computeScaling(cm, cfg);
   cm.scale(t.scaling.flow_factor);
-  Gas air{cfg.compressor_options.gamma, cfg.air_gas_constant};
+  PerfectGas air{cfg.compressor_options.gamma, cfg.air_gas_constant};
   t.compressor = Compressor(std::move(cm), cfg.compressor_ref_pressure_Pa,
                             cfg.compressor_ref_temperature_K, air);
-  const Gas exh{cfg.exhaust_gamma, cfg.exhaust_gas_constant};
+  const PerfectGas exh{cfg.exhaust_gamma, cfg.exhaust_gas_constant};
   TurbineMap tm = TurbineMap::read(cfg.resolve(base_dir, cfg.turbine_map_file),
                                    cfg.turbine_format, exh);
   tm.scale(t.scaling.turbine_flow_factor, t.scaling.speed_factor);

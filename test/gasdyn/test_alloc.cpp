@@ -32,7 +32,7 @@ namespace {
 class Map final : public FlowMap {
  public:
   double massFlow(double p0, double T0, double p, double) const override {
-    return nozzleMassFlow(PerfectGas{}, 2e-4, p0, T0, p);
+    return nozzleMassFlow(hbt::PerfectGas{}, 2e-4, p0, T0, p);
   }
 };
 }  // namespace

@@ -18,7 +18,7 @@ using namespace hbt::gasdyn;
 
 namespace {
 
-const PerfectGas kAir{1.4, 287.0};
+const hbt::PerfectGas kAir{1.4, 287.0};
 
 PipeConfig pipeCfg(const char* name, double L, int cells, double d, SolverKind s, double fD = 0) {
   PipeConfig c;
@@ -245,7 +245,7 @@ TEST(ConstPow, MatchesStdPowAtRoundOff) {
             << "gamma " << gamma << " e " << e << " x " << x;
     }
   }
-  const PerfectGas ex{1.33, 287.0};
+  const hbt::PerfectGas ex{1.33, 287.0};
   for (double pr = 0.3; pr < 1.0; pr += 0.01) {
     const double t = std::pow(pr, (ex.gamma - 1.0) / ex.gamma);
     EXPECT_NEAR(nozzleMassFlowT(ex, 1e-3, 2e5, 800.0, 2e5 * pr, t),

@@ -41,7 +41,7 @@ TEST(Network, OneCellFsmPipesConserveAndRelax) {
   const DriftResult r = runClosedNetwork(SolverKind::FSM, 1, 1.0, true);
   EXPECT_LT(std::abs(r.massDrift()), 1e-12);
   EXPECT_LT(std::abs(r.energyDrift()), 1e-12);
-  Network net(PerfectGas{1.4, 287.0});
+  Network net(hbt::PerfectGas{1.4, 287.0});
   net.setImplicitVolumes(true);
   PipeConfig c;
   c.name = "a", c.length = 0.3, c.cells = 1, c.friction_darcy = 0.05;
@@ -71,7 +71,7 @@ TEST(Network, OneCellFsmPipesConserveAndRelax) {
 TEST(Network, ReservoirFaceSensitivityMatchesFiniteDifference) {
   // d(flux into the pipe)/d p0 of reservoirFace against central differences, in the four
   // regimes: subsonic / choked outflow, subsonic / choked inflow.
-  const PerfectGas g{1.35, 290.0};
+  const hbt::PerfectGas g{1.35, 290.0};
   struct Case { double p0, u; const char* name; };
   const EndState base{1.5, 30.0, 1.6e5, 2e-3};
   for (const Case cs : {Case{1.4e5, 30.0, "subsonic outflow"}, Case{0.3e5, 0.0, "choked outflow"},
@@ -99,7 +99,7 @@ TEST(Network, ReservoirFaceSensitivityMatchesFiniteDifference) {
 TEST_P(BothSolvers, ClosedNetworkRelaxesToEquilibrium) {
   // After the pressure step, friction damps the waves; the final state must approach the uniform
   // rest state with p_eq = (gamma-1) E_total / V_total (energy all internal).
-  Network net(PerfectGas{1.4, 287.0});
+  Network net(hbt::PerfectGas{1.4, 287.0});
   auto cfg = [&](const char* n, double L, double d) {
     PipeConfig c;
     c.name = n, c.length = L, c.cells = static_cast<int>(L * 40), c.friction_darcy = 0.05;

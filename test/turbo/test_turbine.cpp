@@ -172,7 +172,7 @@ TEST(TurbineEntry, PowerAndOutletTemperatureFromEnthalpyDrop) {
 
 TEST(TwinEntryTurbine, EqualAdmissionSplitAndWastegateOrifice) {
   const auto map = rawMap();
-  const Gas exh{kGamma, 287.0};
+  const hbt::PerfectGas exh{kGamma, 287.0};
   const double A = 3e-4, cd = 0.8;
   const TwinEntryTurbine tw(map, Wastegate(cd, A, exh));
   const TurbineEntry full(map, 1.0);
