@@ -46,7 +46,7 @@ ControlCommand EngineControllers::update(double dt, const ControlInputs& in) {
   c.torque_target_Nm = treq;
   // expected brake torque from the requests so far, then this step's request joins the history
   c.torque_model_Nm = torque_model_.expected();
-  torque_model_.push(in.omega * dt * (180.0 / M_PI), treq);
+  torque_model_.push(units::radToDeg(in.omega * dt), treq);
   const double cycles_per_s = 6.0 * in.omega / (4.0 * M_PI);  // cylinder-cycles per second
   // --- boost ---
   const double load = in.full_load > 0.0 ? std::max(treq, 0.0) / in.full_load : 0.0;

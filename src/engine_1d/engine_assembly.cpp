@@ -9,7 +9,7 @@
 namespace hbt::engine1d {
 namespace {
 using gasdyn::End;
-constexpr double kDeg = M_PI / 180.0;
+using units::kRad_per_deg;
 
 std::string num(int k) { return std::to_string(k + 1); }
 
@@ -207,7 +207,7 @@ void EngineAssembly::advance(double interval, double omega) {
 }
 
 double EngineAssembly::stableDt(double omega, std::string* limiter) const {
-  const double dt_ang = P_.engine.coupling_max_deg * kDeg / omega;
+  const double dt_ang = units::degToRad(P_.engine.coupling_max_deg) / omega;
   if (!limiter) return std::min({intake_.stableDt(), exhaust_.stableDt(), dt_ang, cylinderDt()});
   std::string a, b;
   const double di = intake_.stableDt(&a), de = exhaust_.stableDt(&b), dc = cylinderDt();
@@ -244,7 +244,7 @@ void EngineAssembly::coupledStep(double dt, double omega) {
     res_in_[k]->setReservoirState(p, T);
     res_ex_[k]->setReservoirState(p, T);
   }
-  const double lead = P_.engine.valve_area_midstep ? 0.5 * omega * dt / kDeg : 0.0;
+  const double lead = P_.engine.valve_area_midstep ? 0.5 * omega * dt / kRad_per_deg : 0.0;
   for (int k = 0; k < 6; ++k) {
     area_in_[k]->setLead(lead);
     area_ex_[k]->setLead(lead);
@@ -258,7 +258,7 @@ void EngineAssembly::coupledStep(double dt, double omega) {
 
   std::array<double, kNumChannels> x{};
   double work = 0.0, wall = 0.0, fuel = 0.0, nox = 0.0;
-  const double dth = omega * dt / kDeg;
+  const double dth = omega * dt / kRad_per_deg;
   const int nsub_closed = std::max(1, static_cast<int>(std::ceil(dth / substep_deg_ - 1e-9)));
   const int nsub_open = std::max(1, static_cast<int>(std::ceil(dth / substep_open_deg_ - 1e-9)));
   const double ivc = P_.cylinder.ivc_deg, evo = P_.cylinder.evo_deg;
@@ -363,7 +363,7 @@ void EngineAssembly::coupledStep(double dt, double omega) {
   x[kFuel] = fuel / dt;
   x[kWallHeat] = wall / dt;
   x[kNox] = nox / dt;
-  window_.add(dt, omega * dt / kDeg, x);
+  window_.add(dt, omega * dt / kRad_per_deg, x);
   t_ += dt;
   ++steps_;
 }
