@@ -7,7 +7,7 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 Cylinder::Cylinder(const CylinderParams& params, const std::string& name)
     : P_(params),
@@ -402,4 +402,4 @@ void Cylinder::solveTemperatures(double V0, double V1, double Vu0, double Vb0, d
   Vb_ = V1 - Vu_;
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -8,7 +8,7 @@
 #include "common/units.hpp"
 #include "cylinder/cylinder.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 namespace {
 constexpr double kM_NO = 30.0061e-3, kM_NO2 = 46.0055e-3;
 }  // namespace
@@ -159,4 +159,4 @@ void Cylinder::onCycleEnd(double omega) {
   theta_deg_ -= 720.0;
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -6,7 +6,7 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 double ValveProfile::lift(double theta_deg) const {
   double phi = std::fmod(theta_deg - open_deg, 720.0);
@@ -126,4 +126,4 @@ CycleResults SingleCylinderRig::runToPeriodic(int max_cycles, double tol) {
   return prev;
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 EngineControllers::EngineControllers(const Engine1DConfig& cfg, double afr, double fuel_ref)
     : cfg_(cfg),
@@ -70,4 +70,4 @@ ControlCommand EngineControllers::update(double dt, const ControlInputs& in) {
   return c;
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -28,7 +28,7 @@
 #include "engine_1d/engine_1d_params.hpp"
 #include "engine_1d/torque_response_model.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 struct ControlInputs {
   double omega = 0;              // [rad/s]
@@ -74,4 +74,4 @@ class EngineControllers {
   double afr_, fuel_ref_;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -6,7 +6,7 @@
 #include "common/errors.hpp"
 #include "common/yaml_params.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 namespace {
 
 void addPipe(ParamSet& ps, const std::string& key, PipeSpec& p, const std::string& what) {
@@ -219,4 +219,4 @@ void Engine1DParams::validate() const {
     throw InputError(f, "cylinder/geometry/bore_m", "must be > 0");
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -17,7 +17,7 @@
 #include "engine_map/map_engine.hpp"
 #include "turbo/turbo_config.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 /// Largest cylinder count of the assembly (range of engine_1d/cylinders).
 constexpr int kMaxCylinders = 12;
@@ -115,7 +115,7 @@ struct Engine1DConfig {
 /// Everything the Engine1D model needs.
 struct Engine1DParams {
   Engine1DConfig engine;
-  cyl::CylinderParams cylinder;
+  cylinder::CylinderParams cylinder;
   turbo::TurboConfig turbo;
   engine_map::MapEngineParams reference;
   std::string engine_source = "(parameters)";
@@ -138,4 +138,4 @@ struct Engine1DParams {
 /// Resolves `file` against `root` unless it is absolute.
 std::string resolvePath(const std::string& root, const std::string& file);
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

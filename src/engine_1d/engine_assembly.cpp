@@ -6,7 +6,7 @@
 
 #include "common/errors.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 namespace {
 using gasdyn::End;
 using units::kRad_per_deg;
@@ -60,7 +60,7 @@ gasdyn::Pipe& EngineAssembly::pipe(gasdyn::Network& n, const std::string& name,
 
 void EngineAssembly::build(const Initial& in) {
   const Engine1DConfig& E = P_.engine;
-  cyl::CylinderParams cp = P_.cylinder;
+  cylinder::CylinderParams cp = P_.cylinder;
   // The assembly sub-steps the cylinders (coupledStep) at <= substep_deg_; the cylinder's own
   // limit is set above that so it never splits a sub-step again (round-off at exact multiples).
   substep_deg_ = E.cylinder_substep_deg > 0.0 ? E.cylinder_substep_deg : cp.max_substep_deg;
@@ -76,11 +76,11 @@ void EngineAssembly::build(const Initial& in) {
   for (int k = 0; k < n; ++k) {
     CylinderSlot& s = cyl_[k];
     s.bank = E.exhaustEntry(k);
-    s.cyl = std::make_unique<cyl::Cylinder>(cp, "cyl" + num(k));
+    s.cyl = std::make_unique<cylinder::Cylinder>(cp, "cyl" + num(k));
     s.cyl->setCoolantTemperature(in.coolant_K);
     s.cyl->setFuelPerCycle(in.fuel_per_cycle_kg);
     // cylinder k is at local angle -phase when the engine crank (cylinder 1 firing TDC) is 0
-    const double th = cyl::wrapCycleDeg(-s.phase_deg);
+    const double th = cylinder::wrapCycleDeg(-s.phase_deg);
     const bool exhaust_side = th > cp.evo_deg || th < cp.evc_deg - 720.0;
     s.cyl->initialize(th, exhaust_side ? in.p3 : in.p_im, exhaust_side ? in.T3 : in.T_im + 30.0,
                       0.05);
@@ -169,7 +169,7 @@ void EngineAssembly::setWastegateOpening(double a) { turb_map_[0]->setWastegateO
 double EngineAssembly::compressorMassFlow() const { return comp_->massFlow(); }
 
 double EngineAssembly::displacement_m3() const {
-  return cylinders() * cyl::SliderCrank(P_.cylinder.geometry).displacement();
+  return cylinders() * cylinder::SliderCrank(P_.cylinder.geometry).displacement();
 }
 
 double EngineAssembly::peakPressureLastCycles() const {
@@ -269,8 +269,8 @@ void EngineAssembly::coupledStep(double dt, double omega) {
   const int nsub_open = std::max(1, static_cast<int>(std::ceil(dth / substep_open_deg_ - 1e-9)));
   const double ivc = P_.cylinder.ivc_deg, evo = P_.cylinder.evo_deg;
   for (CylinderSlot& s : cyl_) {
-    cyl::Cylinder& c = *s.cyl;
-    cyl::PortFlows pf;
+    cylinder::Cylinder& c = *s.cyl;
+    cylinder::PortFlows pf;
     const gasdyn::EndFlux& fi = s.run_in->endFlux(End::Right);
     const double mi = -fi.mdot_in;
     if (mi > 0.0) {
@@ -318,7 +318,7 @@ void EngineAssembly::coupledStep(double dt, double omega) {
     const int cycles = c.cyclesCompleted();
     double dW, dQ;
     if (cycles != s.prev_cycles) {
-      const cyl::CycleResults& r = c.lastCycle();
+      const cylinder::CycleResults& r = c.lastCycle();
       dW = r.work_net_J - s.prev_work + c.workThisCycle_J();
       dQ = r.heat_wall_J - s.prev_wall + c.wallHeatThisCycle_J();
       nox += r.nox_no2eq_kg;
@@ -374,4 +374,4 @@ void EngineAssembly::coupledStep(double dt, double omega) {
   ++steps_;
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

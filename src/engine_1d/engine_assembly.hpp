@@ -49,7 +49,7 @@
 #include "gasdyn/network.hpp"
 #include "turbo/turbo_config.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 /// Channels of the one-cycle window (rates; means over the last 720 deg).
 enum Channel {
@@ -123,8 +123,8 @@ class EngineAssembly {
   /// Firing angle of cylinder i (0-based) on the engine crank [deg]: its firing TDC when the
   /// engine crank (cylinder 1's firing TDC = 0) is there.
   double firingPhase_deg(int i) const { return cyl_[i].phase_deg; }
-  const cyl::Cylinder& cylinder(int i) const { return *cyl_[i].cyl; }
-  cyl::Cylinder& cylinder(int i) { return *cyl_[i].cyl; }
+  const cylinder::Cylinder& cylinder(int i) const { return *cyl_[i].cyl; }
+  cylinder::Cylinder& cylinder(int i) { return *cyl_[i].cyl; }
   gasdyn::Network& intakeNetwork() { return intake_; }
   gasdyn::Network& exhaustNetwork() { return exhaust_; }
   const Engine1DParams& params() const { return P_; }
@@ -140,7 +140,7 @@ class EngineAssembly {
 
   /// One cylinder with its valves, runners and bookkeeping (elements owned by the networks).
   struct CylinderSlot {
-    std::unique_ptr<cyl::Cylinder> cyl;
+    std::unique_ptr<cylinder::Cylinder> cyl;
     double phase_deg = 0.0;  // firing angle on the engine crank [deg]
     int bank = 0;            // turbine entry / bank collector (0, 1)
     gasdyn::Volume *res_in = nullptr, *res_ex = nullptr;  // the cylinder as its valves see it
@@ -176,4 +176,4 @@ class EngineAssembly {
   long steps_ = 0;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

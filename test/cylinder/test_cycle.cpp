@@ -9,7 +9,7 @@
 #include "cylinder/cylinder.hpp"
 #include "support.hpp"
 
-using namespace hbt::cyl;
+using namespace hbt::cylinder;
 
 namespace {
 constexpr double kOmega = 1400.0 * M_PI / 30.0;

@@ -12,7 +12,7 @@
 #include "cylinder/rig.hpp"
 #include "support.hpp"
 
-using namespace hbt::cyl;
+using namespace hbt::cylinder;
 
 namespace {
 double noxGPerKWh(const CycleResults& r) {

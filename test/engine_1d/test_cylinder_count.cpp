@@ -12,8 +12,8 @@
 #include "cylinder/kinematics.hpp"
 #include "support.hpp"
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 namespace {
 
@@ -84,7 +84,7 @@ TEST(Engine1DCylinderCount, FourCylindersFire180DegApart) {
       // the j-th cylinder of the firing order reaches its firing TDC 720/n deg after the one before
       const int a = static_cast<int>(order[j]) - 1, b = static_cast<int>(order[(j + 1) % n]) - 1;
       EXPECT_EQ(A.firingPhase_deg(a), j * 720.0 / n);
-      const double lag = hbt::cyl::wrapCycleDeg(A.cylinder(a).crankAngle_deg() - A.cylinder(b).crankAngle_deg());
+      const double lag = hbt::cylinder::wrapCycleDeg(A.cylinder(a).crankAngle_deg() - A.cylinder(b).crankAngle_deg());
       EXPECT_NEAR(lag, 720.0 / n, 1e-6) << "cylinders " << a + 1 << " -> " << b + 1 << " of " << n;
     }
   }

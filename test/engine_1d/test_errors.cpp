@@ -9,8 +9,8 @@
 #include "common/errors.hpp"
 #include "support.hpp"
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 namespace {
 std::string readFile(const std::string& path) {

@@ -22,7 +22,7 @@
 
 #include "engine_1d/engine_1d.hpp"
 
-using namespace hbt::engine1d;
+using namespace hbt::engine_1d;
 
 namespace {
 constexpr double kRpm = M_PI / 30.0;
