@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 double Wiebe::x(double th) const {
   const double t = (th - theta_i_deg) / duration_deg;
@@ -52,4 +52,4 @@ double Nozzle::massRate(double p_rail, double p_cyl) const {
   return discharge_coeff * A * std::sqrt(2.0 * fuel_density_kg_m3 * dp);
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -17,7 +17,7 @@
 //   ṁ_inj = C_d n_h (π d_h²/4) sqrt(2 ρ_f (p_rail − p_cyl))   [kg/s].
 #pragma once
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 struct Wiebe {
   double theta_i_deg = 0.0;   // start
@@ -52,4 +52,4 @@ struct Nozzle {
   double massRate(double p_rail_Pa, double p_cyl_Pa) const;  // kg/s
 };
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

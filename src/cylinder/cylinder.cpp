@@ -5,11 +5,9 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 
-namespace hbt::cyl {
-namespace {
-constexpr double kDeg = M_PI / 180.0;
-}
+namespace hbt::cylinder {
 
 Cylinder::Cylinder(const CylinderParams& params, const std::string& name)
     : P_(params),
@@ -26,7 +24,7 @@ void Cylinder::initialize(double theta_deg, double p, double T, double xb) {
   if (!(p > 0 && T > 0 && xb >= 0 && xb <= 1))
     throw InputError(name_, "initial state", "need p > 0, T > 0, 0 <= burned fraction <= 1");
   theta_deg_ = wrapCycleDeg(theta_deg);
-  travel_ = crank_.travel(theta_deg_ * kDeg);
+  travel_ = crank_.travel(units::degToRad(theta_deg_));
   V_ = crank_.clearanceVolume() + crank_.pistonArea() * travel_;
   const double R = (1 - xb) * thermo_.group(kAir).R + xb * thermo_.group(kBurned).R;
   const double m = p * V_ / (R * T);
@@ -83,7 +81,7 @@ double Cylinder::enthalpyOf(double T, double xb) const {
 
 double Cylinder::burnedFraction() const { return groupMass(kBurned) / mass_kg(); }
 
-double Cylinder::dVdtheta_m3_rad() const { return crank_.dVdtheta(theta_deg_ * kDeg); }
+double Cylinder::dVdtheta_m3_rad() const { return crank_.dVdtheta(units::degToRad(theta_deg_)); }
 
 double Cylinder::speciesMassFraction(Species s) const {
   double y = 0.0;
@@ -109,17 +107,17 @@ void Cylinder::diverged(const char* quantity, double value) const {
 void Cylinder::advance(double dt, double omega, const PortFlows& f) {
   if (!(dt >= 0.0) || !std::isfinite(omega) || omega < 0.0) diverged("time step / speed", dt);
   if (dt == 0.0) return;
-  const double dth = omega * dt / kDeg;
+  const double dth = omega * dt / units::kRad_per_deg;
   const int n = std::max(1, static_cast<int>(std::ceil(dth / P_.max_substep_deg)));
   for (int i = 0; i < n; ++i) substep(dt / n, omega, f);
 }
 
 void Cylinder::substep(double dt, double omega, const PortFlows& f) {
-  const double dth = omega * dt / kDeg;
+  const double dth = omega * dt / units::kRad_per_deg;
   const double th0 = theta_deg_, th1 = th0 + dth;
   const bool flowing = f.intake.mdot_kg_s != 0.0 || f.exhaust.mdot_kg_s != 0.0;
   if (flowing && two_zone_) mergeZones();
-  const double travel0 = travel_, travel1 = crank_.travel(th1 * kDeg);
+  const double travel0 = travel_, travel1 = crank_.travel(units::degToRad(th1));
   const double V0 = V_, V1 = crank_.clearanceVolume() + crank_.pistonArea() * travel1, p0 = p_;
   double Vu0 = two_zone_ ? Vu_ : V0, Vb0 = two_zone_ ? Vb_ : 0.0;  // zone volumes at the step start [m³]
   const double mR0 = mR_;
@@ -173,7 +171,7 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
     for (auto& k : pulses_) {
       if (k.ignited || k.injected <= 0.0) continue;
       const double tau_s = P_.ignition_delay_multiplier *
-                           hardenbergHaseDelayDeg(p0, Tu_, cm, P_.cetane_number) * kDeg / omega;
+                           hardenbergHaseDelayDeg(p0, Tu_, cm, P_.cetane_number) * units::kRad_per_deg / omega;
       const double portion = (th1 - std::max(th0, k.soi)) / dth;
       const double lw1 = k.lw + dt * portion / tau_s;
       if (lw1 >= 1.0) {
@@ -404,4 +402,4 @@ void Cylinder::solveTemperatures(double V0, double V1, double Vu0, double Vb0, d
   Vb_ = V1 - Vu_;
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -37,7 +37,7 @@
 #include "cylinder/equilibrium.hpp"
 #include "cylinder/zeldovich.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 struct PortFlow {
   double mdot_kg_s = 0.0;    // > 0 into the cylinder
@@ -183,4 +183,4 @@ class Cylinder {
   int ca_next_ = 0;
 };
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 #include "cylinder/cylinder.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 namespace {
-constexpr double kDeg = M_PI / 180.0;
 constexpr double kM_NO = 30.0061e-3, kM_NO2 = 46.0055e-3;
 }  // namespace
 
@@ -56,7 +56,7 @@ void Cylinder::onIVC(double omega) {
 
 void Cylinder::ignite(Pulse& k, double theta_soc, double omega) {
   const double rpm = omega * 30.0 / M_PI, L = load_;
-  const double deg_per_s = omega / kDeg;
+  const double deg_per_s = omega / units::kRad_per_deg;
   k.ignited = true;
   k.soc = theta_soc;
   k.x_prev = 0.0;
@@ -159,4 +159,4 @@ void Cylinder::onCycleEnd(double omega) {
   theta_deg_ -= 720.0;
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -4,7 +4,7 @@
 
 #include "common/errors.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 CylinderParams::CylinderParams() {
   // Rows: 600, 1000, 1400, 1800, 2200 rpm; columns: load 0, 0.25, 0.5, 0.75, 1.
@@ -134,4 +134,4 @@ void CylinderParams::finalize(const std::string& file) {
     throw InputError(file, "cylinder/valve_events/ivc_deg", "need IVC < 0 < EVO within 360 deg");
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

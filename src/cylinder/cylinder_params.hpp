@@ -16,7 +16,7 @@
 #include "common/table2d.hpp"
 #include "cylinder/thermo.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 using hbt::Table2D;  // common/table2d.hpp
 
@@ -61,4 +61,4 @@ struct CylinderParams {
   Table2D premix_dur, premix_m, diff_tail, diff_m;
 };
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 namespace {
 
 constexpr int kNs = 11;  // equilibrium species except Ar
@@ -138,4 +138,4 @@ bool Equilibrium::solve(const std::array<double, 5>& b, double T, double p_Pa,
   return ok;
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -16,7 +16,7 @@
 
 #include "cylinder/thermo.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 class Equilibrium {
  public:
@@ -32,4 +32,4 @@ class Equilibrium {
   int iters_ = 0;
 };
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

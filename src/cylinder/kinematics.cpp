@@ -2,7 +2,7 @@
 
 #include "common/errors.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 SliderCrank::SliderCrank(const Geometry& g) : g_(g) {
   if (!(g.bore_m > 0 && g.stroke_m > 0 && g.rod_m > g.stroke_m / 2 && g.compression_ratio > 1))
@@ -14,4 +14,4 @@ SliderCrank::SliderCrank(const Geometry& g) : g_(g) {
   Vc_ = Vd_ / (g.compression_ratio - 1.0);
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -13,7 +13,7 @@
 #pragma once
 #include <cmath>
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 struct Geometry {
   double bore_m = 0.104;
@@ -64,4 +64,4 @@ inline double wrapCycleDeg(double deg) {
   return x - 360.0;
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 double woschniCoefficient(double B, double p_Pa, double T, double w, double C0) {
   // pow(x, e) = exp(e ln x): one log per factor; w and p are positive here.
@@ -45,4 +45,4 @@ double ChenFlynn::fmep_Pa(double pmax_Pa, double cm, double Tc) const {
   return bar * 1e5 * viscosityFactor(Tc);
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

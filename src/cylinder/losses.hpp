@@ -22,7 +22,7 @@
 //   Friction torque of one cylinder: M_f = FMEP V_d / (4π)  [N m].
 #pragma once
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 /// Woschni heat-transfer coefficient [W/(m² K)] (p in Pa, converted to kPa inside).
 double woschniCoefficient(double bore_m, double p_Pa, double T_K, double w_m_s, double C0 = 3.26);
@@ -63,4 +63,4 @@ struct ChenFlynn {
   double fmep_Pa(double pmax_Pa, double cm_m_s, double T_coolant_K) const;
 };
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

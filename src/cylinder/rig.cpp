@@ -4,8 +4,9 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 double ValveProfile::lift(double theta_deg) const {
   double phi = std::fmod(theta_deg - open_deg, 720.0);
@@ -86,7 +87,7 @@ PortFlow SingleCylinderRig::valveFlow(const ValveProfile& v, double p_res, doubl
 
 PortFlows SingleCylinderRig::step() {
   const double omega = rp_.speed_rpm * M_PI / 30.0;
-  const double dt = rp_.step_deg * M_PI / 180.0 / omega;
+  const double dt = units::degToRad(rp_.step_deg) / omega;
   PortFlows f;
   f.intake = valveFlow(rp_.intake, rp_.p_intake_Pa, rp_.T_intake_K, rp_.intake_burned_frac);
   f.exhaust = valveFlow(rp_.exhaust, rp_.p_exhaust_Pa, rp_.T_exhaust_K, xb_exh_);
@@ -125,4 +126,4 @@ CycleResults SingleCylinderRig::runToPeriodic(int max_cycles, double tol) {
   return prev;
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

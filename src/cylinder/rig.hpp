@@ -13,7 +13,7 @@
 #pragma once
 #include "cylinder/cylinder.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 struct ValveProfile {
   double open_deg = 0.0, duration_deg = 220.0, max_lift_m = 0.012, diameter_m = 0.035;
@@ -57,4 +57,4 @@ class SingleCylinderRig {
   double xb_exh_ = 0.3, out_m_ = 0.0, out_mxb_ = 0.0;
 };
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

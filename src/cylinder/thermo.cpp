@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 namespace {
 
 // GRI-Mech 3.0 thermo data (TPIS/Burcat); C12H23 Jet-A(g) from Burcat's database.
@@ -186,4 +186,4 @@ double temperatureFromU(const Poly& ext, double U, double T0) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

@@ -24,7 +24,7 @@
 #pragma once
 #include <array>
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 enum Species { kN2, kO2, kAr, kCO2, kH2O, kCO, kH2, kOH, kH, kO, kN, kNO, kFuel, kNumSpecies };
 enum Group { kAir = 0, kFuelVap = 1, kBurned = 2, kNumGroups = 3 };
@@ -114,4 +114,4 @@ inline Poly mixturePoly(const GasThermo& th, const double m[kNumGroups]) {
 /// returns NaN if it fails (the caller raises ModelDivergence with the element name).
 double temperatureFromU(const Poly& ext, double U, double T0);
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

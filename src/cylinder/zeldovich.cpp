@@ -10,7 +10,7 @@
 
 #include "common/errors.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 struct ZeldovichNO::Impl {
   SUNContext ctx = nullptr;
@@ -137,4 +137,4 @@ void ZeldovichNO::integrate(double dt, double& c_NO, double& c_N, bool start_N_q
   c_N = NV_Ith_S(m.y, 1);
 }
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

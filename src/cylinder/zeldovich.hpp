@@ -21,7 +21,7 @@
 
 #include "cylinder/thermo.hpp"
 
-namespace hbt::cyl {
+namespace hbt::cylinder {
 
 class ZeldovichNO {
  public:
@@ -58,4 +58,4 @@ class ZeldovichNO {
   friend struct ZeldovichAccess;
 };
 
-}  // namespace hbt::cyl
+}  // namespace hbt::cylinder

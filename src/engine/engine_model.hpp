@@ -1,7 +1,7 @@
 // The engine as the twin sees it: one ROS-free interface over the engine models, so that one
 // participant (node/engine_participant.hpp) runs either of them. Implementations, each beside
 // its model: engine_map::MapEngineModel (../engine_map/map_engine_model.hpp, launch engine:=map)
-// and engine1d::Engine1DModel (../engine_1d/engine_1d_model.hpp, engine:=1d).
+// and engine_1d::Engine1DModel (../engine_1d/engine_1d_model.hpp, engine:=1d).
 //
 // Governing equations: the model's own (map_engine.hpp: VECTO map + PT1 torque build-up +
 // quasi-steady gas path; engine_1d.hpp: crank-angle-resolved 1D gas dynamics + 0D cylinders +

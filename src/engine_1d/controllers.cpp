@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 EngineControllers::EngineControllers(const Engine1DConfig& cfg, double afr, double fuel_ref)
     : cfg_(cfg),
@@ -46,8 +46,8 @@ ControlCommand EngineControllers::update(double dt, const ControlInputs& in) {
   c.torque_target_Nm = treq;
   // expected brake torque from the requests so far, then this step's request joins the history
   c.torque_model_Nm = torque_model_.expected();
-  torque_model_.push(in.omega * dt * (180.0 / M_PI), treq);
-  const double cycles_per_s = 6.0 * in.omega / (4.0 * M_PI);  // cylinder-cycles per second
+  torque_model_.push(units::radToDeg(in.omega * dt), treq);
+  const double cycles_per_s = cfg_.cylinders * in.omega / (4.0 * M_PI);  // cylinder-cycles per second
   // --- boost ---
   const double load = in.full_load > 0.0 ? std::max(treq, 0.0) / in.full_load : 0.0;
   c.boost_target_Pa = boostTarget(in.omega, load, in.ambient_p);
@@ -70,4 +70,4 @@ ControlCommand EngineControllers::update(double dt, const ControlInputs& in) {
   return c;
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -3,7 +3,7 @@
 // Torque (fuel) controller — injected fuel per cylinder and cycle m_f [kg]:
 //   T_req' = clamp(T_req, T_mot(w), T_fl(w))                  (reference full-load curve)
 //   m_ff   = F_ref(w, T_req') / (z w/(4 pi))                  feed-forward from the reference
-//            map's steady fuel flow F_ref [kg/s], z = 6 cylinders, w/(4 pi) cycles per second
+//            map's steady fuel flow F_ref [kg/s], z = engine_1d/cylinders, w/(4 pi) cycles per second
 //   m_f    = clamp(m_ff + PI(T_model - T_b), 0, m_smoke),  |PI| <= fuel_trim_max m_ff,rated
 //   T_model = the brake torque expected from the past requests T_req' (torque_response_model.hpp:
 //            dead angle torque_dead_angle_deg, then the one-cycle mean like T_b), so the PI trims
@@ -28,7 +28,7 @@
 #include "engine_1d/engine_1d_params.hpp"
 #include "engine_1d/torque_response_model.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 struct ControlInputs {
   double omega = 0;              // [rad/s]
@@ -74,4 +74,4 @@ class EngineControllers {
   double afr_, fuel_ref_;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

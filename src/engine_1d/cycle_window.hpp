@@ -18,7 +18,7 @@
 #include <array>
 #include <cmath>
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 template <int kChannels, int kBins = 144>
 class CycleWindow {
@@ -103,4 +103,4 @@ class CycleWindow {
   double angle_in_bin_ = 0.0;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

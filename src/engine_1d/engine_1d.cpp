@@ -7,7 +7,7 @@
 
 #include "common/errors.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 namespace {
 constexpr double kStoppedRadS = 200.0 * M_PI / 30.0;
 
@@ -32,7 +32,7 @@ Engine1D::Engine1D(const Engine1DParams& p, const std::string& root) : P_(p) {
   ref_params.nox_map_file.clear();
   ref_ = std::make_unique<engine_map::MapEngine>(ref_params, root);
   maps_ = EngineAssembly::FlowMaps::build(*tc_);
-  cyl::Cylinder probe(P_.cylinder, "probe");
+  cylinder::Cylinder probe(P_.cylinder, "probe");
   ctl_ = std::make_unique<EngineControllers>(P_.engine, probe.thermo().afrStoich(),
                                              P_.cylinder.fuel_ref_kg);
   reset(1200.0 * M_PI / 30.0, 0.0);
@@ -56,7 +56,7 @@ void Engine1D::reset(double w, double torque, double T_amb, double p_amb, double
   in.T3 = 550.0 + 350.0 * load;
   in.turbo_rad_s = P_.engine.initial_turbo_speed_rpm * M_PI / 30.0 *
                    std::clamp(0.35 + 0.65 * load, 0.2, 1.0) * std::sqrt(std::min(rpm / 1400.0, 1.6));
-  const double cps = 6.0 * w / (4.0 * M_PI);
+  const double cps = P_.engine.cylinders * w / (4.0 * M_PI);  // cylinder-cycles per second
   in.fuel_per_cycle_kg = treq > tmot ? ref_->steadyFuel(w, treq) / cps : 0.0;
   asm_.reset();
   asm_ = std::make_unique<EngineAssembly>(P_, *tc_, maps_, in);
@@ -161,21 +161,21 @@ void Engine1D::computeOutputs(double dt, double w, const Engine1DInputs& in) {
   o.turbo_speed_rad_s = A.turboSpeed();
   o.wastegate_opening = A.wastegateOpening();
   o.air_mass_flow_kg_s = m[kAir];
-  const cyl::GasThermo& th = A.cylinder(0).thermo();
+  const cylinder::GasThermo& th = A.cylinder(0).thermo();
   o.lambda = m[kFuel] > 0.0 ? m[kAir] / (th.afrStoich() * m[kFuel]) : 0.0;
   o.exhaust_mass_flow_kg_s = m[kExhOut];
   const double cp_ex = P_.turbo.exhaust_gamma * P_.turbo.exhaust_gas_constant /
                        (P_.turbo.exhaust_gamma - 1.0);
   if (m[kExhOut] > 1e-6) o.exhaust_T_K = m[kExhEnth] / (m[kExhOut] * cp_ex);
   const double xb = std::clamp(A.exhaustBurnedFraction(), 0.0, 1.0);
-  auto y = [&](cyl::Species s) {
-    return (1.0 - xb) * th.massFraction(cyl::kAir, s) + xb * th.massFraction(cyl::kBurned, s);
+  auto y = [&](cylinder::Species s) {
+    return (1.0 - xb) * th.massFraction(cylinder::kAir, s) + xb * th.massFraction(cylinder::kBurned, s);
   };
-  o.exhaust.y_O2 = y(cyl::kO2);
-  o.exhaust.y_N2 = y(cyl::kN2);
-  o.exhaust.y_CO2 = y(cyl::kCO2);
-  o.exhaust.y_H2O = y(cyl::kH2O);
-  o.exhaust.y_Ar = y(cyl::kAr);
+  o.exhaust.y_O2 = y(cylinder::kO2);
+  o.exhaust.y_N2 = y(cylinder::kN2);
+  o.exhaust.y_CO2 = y(cylinder::kCO2);
+  o.exhaust.y_H2O = y(cylinder::kH2O);
+  o.exhaust.y_Ar = y(cylinder::kAr);
   o.exhaust.y_NOx = m[kExhOut] > 1e-6 ? std::min(m[kNox] / m[kExhOut], 0.1) : 0.0;
   o.back_pressure_Pa = back_p_;
   o.nox_mass_flow_kg_s = m[kNox];
@@ -196,4 +196,4 @@ void Engine1D::computeOutputs(double dt, double w, const Engine1DInputs& in) {
     check(v, "output");
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -33,7 +33,7 @@
 #include "engine_1d/engine_assembly.hpp"
 #include "engine_map/map_engine.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 struct Engine1DInputs {
   double speed_rad_s = 0.0;        // imposed crank speed [rad/s]
@@ -118,4 +118,4 @@ class Engine1D {
   double back_p_ = 0.0;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -4,7 +4,7 @@
 
 #include "common/units.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 Engine1DModel::Engine1DModel(const Engine1DParams& p, const std::string& repo_root)
     : engine_(p, repo_root) {}
@@ -79,4 +79,4 @@ void Engine1DModel::diagnosticValues(std::vector<engine::EngineDiagnosticValue>&
   kv.push_back({"thread_cpu_total_s", o.cpu_time_total_s, K::kNumber});
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

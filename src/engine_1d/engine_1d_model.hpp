@@ -16,7 +16,7 @@
 #include "engine/engine_model.hpp"
 #include "engine_1d/engine_1d.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 class Engine1DModel : public engine::EngineModel {
  public:
@@ -46,4 +46,4 @@ class Engine1DModel : public engine::EngineModel {
   long gas_steps_at_status_ = 0;  // coupled sub-steps counted at the last status
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -6,7 +6,7 @@
 #include "common/errors.hpp"
 #include "common/yaml_params.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 namespace {
 
 void addPipe(ParamSet& ps, const std::string& key, PipeSpec& p, const std::string& what) {
@@ -27,6 +27,41 @@ void addValve(ParamSet& ps, const std::string& key, ValveSpec& v, const std::str
   ps.add(key + "/cd_back", v.cd_back, "-", 0.0, 1.0, what + ": Cd (curtain) back flow");
 }
 
+// Cylinder count, firing order and exhaust banks against each other (before any simulation).
+void validateCylinders(const Engine1DConfig& e, const std::string& f) {
+  const int n = e.cylinders;
+  const std::string one_to_n = "1.." + std::to_string(n);
+  if (n < 1 || n > kMaxCylinders)
+    throw InputError(f, "engine_1d/cylinders",
+                     "must be 1.." + std::to_string(kMaxCylinders) + ", got " + std::to_string(n));
+  std::vector<double> fo = e.firing_order;
+  std::sort(fo.begin(), fo.end());
+  bool permutation = static_cast<int>(fo.size()) == n;
+  for (std::size_t i = 0; permutation && i < fo.size(); ++i) permutation = fo[i] == i + 1.0;
+  if (!permutation)
+    throw InputError(f, "engine_1d/firing_order",
+                     "must be a permutation of " + one_to_n + " (engine_1d/cylinders = " +
+                         std::to_string(n) + "), got " + std::to_string(fo.size()) + " values");
+  if (static_cast<int>(e.exhaust_bank.size()) != n)
+    throw InputError(f, "engine_1d/exhaust_bank",
+                     "needs one turbine entry per cylinder " + one_to_n + ": " + std::to_string(n) +
+                         " values, got " + std::to_string(e.exhaust_bank.size()));
+  int fed[2] = {0, 0};
+  for (int k = 0; k < n; ++k) {
+    const double b = e.exhaust_bank[k];
+    if (b != 1.0 && b != 2.0)
+      throw InputError(f, "engine_1d/exhaust_bank",
+                       "cylinder " + std::to_string(k + 1) + ": turbine entry must be 1 or 2, got " +
+                           std::to_string(b));
+    ++fed[e.exhaustEntry(k)];
+  }
+  for (int b = 0; b < 2; ++b)
+    if (fed[b] == 0)
+      throw InputError(f, "engine_1d/exhaust_bank",
+                       "turbine entry " + std::to_string(b + 1) +
+                           " has no cylinder (the twin-entry turbine needs both fed)");
+}
+
 }  // namespace
 
 std::string resolvePath(const std::string& root, const std::string& file) {
@@ -38,7 +73,10 @@ void Engine1DConfig::declare(ParamSet& ps) {
   ps.setPrefix("engine_1d/");
   ps.add("solver", solver, "pipe solver: fsm (fast, staggered) or tvd (fine-mesh reference)");
   ps.add("tvd_mesh_factor", tvd_mesh_factor, "-", 1.0, 8.0, "TVD cells = FSM cells x factor");
-  ps.add("firing_order", firing_order, "-", 1.0, 6.0, "cylinder numbers in firing order");
+  ps.add("cylinders", cylinders, "-", 1, kMaxCylinders, "cylinder count n (firing interval 720/n deg)");
+  ps.add("firing_order", firing_order, "-", 1.0, kMaxCylinders, "cylinder numbers 1..n in firing order");
+  ps.add("exhaust_bank", exhaust_bank, "-", 1.0, 2.0,
+         "twin-entry turbine entry (1, 2) of cylinders 1..n (bank collector of its exhaust runner)");
   ps.add("air_filter/dp_ref_Pa", air_filter_dp_ref_Pa, "Pa", 0.0, 2e4, "filter loss at ref flow");
   ps.add("air_filter/ref_flow_kg_s", air_filter_ref_flow_kg_s, "kg/s", 0.01, 2.0,
          "reference flow of the filter loss (at 298 K, 100 kPa)");
@@ -166,11 +204,7 @@ void Engine1DParams::validate() const {
   const std::string& f = engine_source;
   if (e.solver != "fsm" && e.solver != "tvd")
     throw InputError(f, "engine_1d/solver", "must be 'fsm' or 'tvd', got '" + e.solver + "'");
-  std::vector<double> fo = e.firing_order;
-  std::sort(fo.begin(), fo.end());
-  for (int i = 0; i < 6; ++i)
-    if (fo.size() != 6 || fo[i] != i + 1)
-      throw InputError(f, "engine_1d/firing_order", "must be a permutation of 1..6");
+  validateCylinders(e, f);
   for (const auto* v : {&e.intake_valve, &e.exhaust_valve}) {
     const std::string k = v == &e.intake_valve ? "engine_1d/valves/intake" : "engine_1d/valves/exhaust";
     if (v->ld.size() < 2 || v->cd_normal.size() != v->ld.size() || v->cd_back.size() != v->ld.size())
@@ -185,4 +219,4 @@ void Engine1DParams::validate() const {
     throw InputError(f, "cylinder/geometry/bore_m", "must be > 0");
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -17,7 +17,10 @@
 #include "engine_map/map_engine.hpp"
 #include "turbo/turbo_config.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
+
+/// Largest cylinder count of the assembly (range of engine_1d/cylinders).
+constexpr int kMaxCylinders = 12;
 
 struct PipeSpec {
   double length_m = 0.3;
@@ -39,7 +42,15 @@ struct ValveSpec {
 struct Engine1DConfig {
   std::string solver = "fsm";        // fsm | tvd
   double tvd_mesh_factor = 2.0;      // TVD: cells x factor (fine-mesh reference)
+  // Cylinders: count n, firing order (cylinder numbers 1..n, fired 720/n deg apart) and the
+  // twin-entry turbine entry (1, 2) each cylinder's exhaust runner feeds through its bank
+  // collector; validate() checks them against each other.
+  int cylinders = 6;
   std::vector<double> firing_order{1, 5, 3, 6, 2, 4};
+  std::vector<double> exhaust_bank{1, 1, 1, 2, 2, 2};
+  double firingIntervalDeg() const { return 720.0 / cylinders; }  // [deg crank]
+  /// Turbine entry (0, 1) of cylinder k (0-based): exhaust_bank[k] - 1.
+  int exhaustEntry(int k) const { return static_cast<int>(exhaust_bank[k]) - 1; }
   // Air path
   double air_filter_dp_ref_Pa = 3000.0, air_filter_ref_flow_kg_s = 0.30;
   PipeSpec compressor_outlet{0.6, 0.065, 4};
@@ -104,7 +115,7 @@ struct Engine1DConfig {
 /// Everything the Engine1D model needs.
 struct Engine1DParams {
   Engine1DConfig engine;
-  cyl::CylinderParams cylinder;
+  cylinder::CylinderParams cylinder;
   turbo::TurboConfig turbo;
   engine_map::MapEngineParams reference;
   std::string engine_source = "(parameters)";
@@ -127,4 +138,4 @@ struct Engine1DParams {
 /// Resolves `file` against `root` unless it is absolute.
 std::string resolvePath(const std::string& root, const std::string& file);
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

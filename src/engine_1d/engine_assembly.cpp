@@ -6,10 +6,10 @@
 
 #include "common/errors.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 namespace {
 using gasdyn::End;
-constexpr double kDeg = M_PI / 180.0;
+using units::kRad_per_deg;
 
 std::string num(int k) { return std::to_string(k + 1); }
 
@@ -60,26 +60,30 @@ gasdyn::Pipe& EngineAssembly::pipe(gasdyn::Network& n, const std::string& name,
 
 void EngineAssembly::build(const Initial& in) {
   const Engine1DConfig& E = P_.engine;
-  cyl::CylinderParams cp = P_.cylinder;
+  cylinder::CylinderParams cp = P_.cylinder;
   // The assembly sub-steps the cylinders (coupledStep) at <= substep_deg_; the cylinder's own
   // limit is set above that so it never splits a sub-step again (round-off at exact multiples).
   substep_deg_ = E.cylinder_substep_deg > 0.0 ? E.cylinder_substep_deg : cp.max_substep_deg;
   substep_open_deg_ = std::max(substep_deg_, E.cylinder_substep_open_deg);
   cp.max_substep_deg = 2.0 * substep_open_deg_;
   if (E.nox_interval_deg > 0.0) cp.nox_interval_deg = E.nox_interval_deg;
-  for (int j = 0; j < 6; ++j) {
+  const int n = E.cylinders;  // validated with firing_order and exhaust_bank (validate())
+  cyl_.resize(n);
+  for (int j = 0; j < n; ++j) {
     const int c = static_cast<int>(E.firing_order[j]) - 1;
-    phase_deg_[c] = 120.0 * j;
+    cyl_[c].phase_deg = E.firingIntervalDeg() * j;
   }
-  for (int k = 0; k < 6; ++k) {
-    cyl_[k] = std::make_unique<cyl::Cylinder>(cp, "cyl" + num(k));
-    cyl_[k]->setCoolantTemperature(in.coolant_K);
-    cyl_[k]->setFuelPerCycle(in.fuel_per_cycle_kg);
+  for (int k = 0; k < n; ++k) {
+    CylinderSlot& s = cyl_[k];
+    s.bank = E.exhaustEntry(k);
+    s.cyl = std::make_unique<cylinder::Cylinder>(cp, "cyl" + num(k));
+    s.cyl->setCoolantTemperature(in.coolant_K);
+    s.cyl->setFuelPerCycle(in.fuel_per_cycle_kg);
     // cylinder k is at local angle -phase when the engine crank (cylinder 1 firing TDC) is 0
-    const double th = cyl::wrapCycleDeg(-phase_deg_[k]);
+    const double th = cylinder::wrapCycleDeg(-s.phase_deg);
     const bool exhaust_side = th > cp.evo_deg || th < cp.evc_deg - 720.0;
-    cyl_[k]->initialize(th, exhaust_side ? in.p3 : in.p_im, exhaust_side ? in.T3 : in.T_im + 30.0,
-                        0.05);
+    s.cyl->initialize(th, exhaust_side ? in.p3 : in.p_im, exhaust_side ? in.T3 : in.T_im + 30.0,
+                      0.05);
   }
   shaft_.setOmega(in.turbo_rad_s);
   T_amb_ = in.T_amb;
@@ -97,13 +101,14 @@ void EngineAssembly::build(const Initial& in) {
                                            gasdyn::leftEnd(*cac_pipe_), tc_.intercooler);
   cac_->setCoolingAirTemperature(in.T_amb);
   intake_.connect(*cac_pipe_, End::Right, *plenum_);
-  for (int k = 0; k < 6; ++k) {
-    run_in_[k] = &pipe(intake_, "intake_runner_" + num(k), E.intake_runner, E.intake_friction_darcy, false);
-    intake_.connect(*run_in_[k], End::Left, *plenum_);
-    res_in_[k] = &intake_.addReservoir("cyl" + num(k) + "_intake_side", in.p_im, in.T_im);
-    auto area = std::make_shared<CrankValveArea>(*cyl_[k], E.intake_valve, cp.ivo_deg, cp.ivc_deg, false);
-    area_in_[k] = area.get();
-    intake_.add<CylinderValve>("intake_valves_" + num(k), *res_in_[k], gasdyn::rightEnd(*run_in_[k]), area);
+  for (int k = 0; k < n; ++k) {
+    CylinderSlot& s = cyl_[k];
+    s.run_in = &pipe(intake_, "intake_runner_" + num(k), E.intake_runner, E.intake_friction_darcy, false);
+    intake_.connect(*s.run_in, End::Left, *plenum_);
+    s.res_in = &intake_.addReservoir("cyl" + num(k) + "_intake_side", in.p_im, in.T_im);
+    auto area = std::make_shared<CrankValveArea>(*s.cyl, E.intake_valve, cp.ivo_deg, cp.ivc_deg, false);
+    s.area_in = area.get();
+    intake_.add<CylinderValve>("intake_valves_" + num(k), *s.res_in, gasdyn::rightEnd(*s.run_in), area);
   }
   // --- exhaust network ---
   turb_out_ = &exhaust_.addVolume("turbine_outlet", E.turbine_outlet_m3, in.p_amb * 1.1, in.T3 - 100.0);
@@ -115,13 +120,14 @@ void EngineAssembly::build(const Initial& in) {
     turb_[b] = &exhaust_.add<gasdyn::TurbineEntry>("turbine_entry_" + num(b), gasdyn::rightEnd(*turb_pipe_[b]),
                                                   *turb_out_, turb_map_[b]);
   }
-  for (int k = 0; k < 6; ++k) {
-    run_ex_[k] = &pipe(exhaust_, "exhaust_runner_" + num(k), E.exhaust_runner, E.exhaust_friction_darcy, true);
-    res_ex_[k] = &exhaust_.addReservoir("cyl" + num(k) + "_exhaust_side", in.p3, in.T3);
-    auto area = std::make_shared<CrankValveArea>(*cyl_[k], E.exhaust_valve, cp.evo_deg, cp.evc_deg, true);
-    area_ex_[k] = area.get();
-    exhaust_.add<CylinderValve>("exhaust_valves_" + num(k), *res_ex_[k], gasdyn::leftEnd(*run_ex_[k]), area);
-    exhaust_.connect(*run_ex_[k], End::Right, *junction_[k < 3 ? 0 : 1]);
+  for (int k = 0; k < n; ++k) {
+    CylinderSlot& s = cyl_[k];
+    s.run_ex = &pipe(exhaust_, "exhaust_runner_" + num(k), E.exhaust_runner, E.exhaust_friction_darcy, true);
+    s.res_ex = &exhaust_.addReservoir("cyl" + num(k) + "_exhaust_side", in.p3, in.T3);
+    auto area = std::make_shared<CrankValveArea>(*s.cyl, E.exhaust_valve, cp.evo_deg, cp.evc_deg, true);
+    s.area_ex = area.get();
+    exhaust_.add<CylinderValve>("exhaust_valves_" + num(k), *s.res_ex, gasdyn::leftEnd(*s.run_ex), area);
+    exhaust_.connect(*s.run_ex, End::Right, *junction_[s.bank]);
   }
   down_pipe_ = &pipe(exhaust_, "downpipe", E.downpipe, E.exhaust_friction_darcy, true);
   exhaust_.connect(*down_pipe_, End::Left, *turb_out_);
@@ -132,21 +138,17 @@ void EngineAssembly::build(const Initial& in) {
   for (auto& p : exhaust_.pipes())
     p->setUniform(p.get() == down_pipe_ ? in.p_amb * 1.08 : in.p3,
                   p.get() == down_pipe_ ? in.T3 - 100.0 : in.T3);
-  for (int k = 0; k < 6; ++k) {
-    prev_cycles_[k] = 0;
-    prev_work_[k] = prev_wall_[k] = prev_inj_[k] = 0.0;
-  }
   window_.reset();
 }
 
 void EngineAssembly::setFuelPerCycle(double m) {
-  for (auto& c : cyl_) c->setFuelPerCycle(m);
+  for (auto& s : cyl_) s.cyl->setFuelPerCycle(m);
 }
 void EngineAssembly::setCoolantTemperature(double T) {
-  for (auto& c : cyl_) c->setCoolantTemperature(T);
+  for (auto& s : cyl_) s.cyl->setCoolantTemperature(T);
 }
 void EngineAssembly::setCombustion(bool on) {
-  for (auto& c : cyl_) c->setCombustion(on);
+  for (auto& s : cyl_) s.cyl->setCombustion(on);
 }
 void EngineAssembly::setAmbient(double p_amb, double T_amb) {
   // Air filter: dp = K mdot^2 T/p, K from (dp_ref, mdot_ref) at 298.15 K, 100 kPa; flow = cycle mean.
@@ -166,9 +168,13 @@ void EngineAssembly::setWastegateOpening(double a) { turb_map_[0]->setWastegateO
 
 double EngineAssembly::compressorMassFlow() const { return comp_->massFlow(); }
 
+double EngineAssembly::displacement_m3() const {
+  return cylinders() * cylinder::SliderCrank(P_.cylinder.geometry).displacement();
+}
+
 double EngineAssembly::peakPressureLastCycles() const {
   double p = 0.0;
-  for (const auto& c : cyl_) p = std::max(p, c->lastCycle().pmax_Pa);
+  for (const auto& s : cyl_) p = std::max(p, s.cyl->lastCycle().pmax_Pa);
   return p;
 }
 
@@ -183,7 +189,7 @@ void EngineAssembly::advance(double interval, double omega) {
   if (!(omega > 0.0) || !std::isfinite(omega))
     throw ModelDivergence("engine_1d", "crank speed", "must be finite and > 0");
   fric_torque_ = 0.0;
-  for (const auto& c : cyl_) fric_torque_ += c->frictionTorque_Nm(omega);
+  for (const auto& s : cyl_) fric_torque_ += s.cyl->frictionTorque_Nm(omega);
   double remaining = interval;
   while (remaining > 0.0) {
     const double dtmax = stableDt(omega);
@@ -207,7 +213,7 @@ void EngineAssembly::advance(double interval, double omega) {
 }
 
 double EngineAssembly::stableDt(double omega, std::string* limiter) const {
-  const double dt_ang = P_.engine.coupling_max_deg * kDeg / omega;
+  const double dt_ang = units::degToRad(P_.engine.coupling_max_deg) / omega;
   if (!limiter) return std::min({intake_.stableDt(), exhaust_.stableDt(), dt_ang, cylinderDt()});
   std::string a, b;
   const double di = intake_.stableDt(&a), de = exhaust_.stableDt(&b), dc = cylinderDt();
@@ -225,29 +231,29 @@ double EngineAssembly::cylinderDt() const {
   if (!(cfl > 0.0)) return std::numeric_limits<double>::infinity();
   const PerfectGas& g = exhaust_.gas();
   double dt = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 6; ++k) {
+  for (const CylinderSlot& s : cyl_) {
     double fi, ri, fe, re;
-    const double th = cyl_[k]->crankAngle_deg();
-    area_in_[k]->areasAt(th, fi, ri);
-    area_ex_[k]->areasAt(th, fe, re);
+    const double th = s.cyl->crankAngle_deg();
+    s.area_in->areasAt(th, fi, ri);
+    s.area_ex->areasAt(th, fe, re);
     const double A = std::max(fi, ri) + std::max(fe, re);
     if (A <= 0.0) continue;
-    const double c = std::sqrt(g.gamma * g.R * cyl_[k]->temperature_K());
-    dt = std::min(dt, cfl * cyl_[k]->volume_m3() / (c * A));
+    const double c = std::sqrt(g.gamma * g.R * s.cyl->temperature_K());
+    dt = std::min(dt, cfl * s.cyl->volume_m3() / (c * A));
   }
   return dt;
 }
 
 void EngineAssembly::coupledStep(double dt, double omega) {
-  for (int k = 0; k < 6; ++k) {
-    const double p = cyl_[k]->pressure_Pa(), T = cyl_[k]->temperature_K();
-    res_in_[k]->setReservoirState(p, T);
-    res_ex_[k]->setReservoirState(p, T);
+  for (CylinderSlot& s : cyl_) {
+    const double p = s.cyl->pressure_Pa(), T = s.cyl->temperature_K();
+    s.res_in->setReservoirState(p, T);
+    s.res_ex->setReservoirState(p, T);
   }
-  const double lead = P_.engine.valve_area_midstep ? 0.5 * omega * dt / kDeg : 0.0;
-  for (int k = 0; k < 6; ++k) {
-    area_in_[k]->setLead(lead);
-    area_ex_[k]->setLead(lead);
+  const double lead = P_.engine.valve_area_midstep ? 0.5 * omega * dt / kRad_per_deg : 0.0;
+  for (CylinderSlot& s : cyl_) {
+    s.area_in->setLead(lead);
+    s.area_ex->setLead(lead);
   }
   const double wtc = shaft_.omega();
   comp_->setSpeed(wtc);
@@ -258,33 +264,33 @@ void EngineAssembly::coupledStep(double dt, double omega) {
 
   std::array<double, kNumChannels> x{};
   double work = 0.0, wall = 0.0, fuel = 0.0, nox = 0.0;
-  const double dth = omega * dt / kDeg;
+  const double dth = omega * dt / kRad_per_deg;
   const int nsub_closed = std::max(1, static_cast<int>(std::ceil(dth / substep_deg_ - 1e-9)));
   const int nsub_open = std::max(1, static_cast<int>(std::ceil(dth / substep_open_deg_ - 1e-9)));
   const double ivc = P_.cylinder.ivc_deg, evo = P_.cylinder.evo_deg;
-  for (int k = 0; k < 6; ++k) {
-    cyl::Cylinder& c = *cyl_[k];
-    cyl::PortFlows pf;
-    const gasdyn::EndFlux& fi = run_in_[k]->endFlux(End::Right);
+  for (CylinderSlot& s : cyl_) {
+    cylinder::Cylinder& c = *s.cyl;
+    cylinder::PortFlows pf;
+    const gasdyn::EndFlux& fi = s.run_in->endFlux(End::Right);
     const double mi = -fi.mdot_in;
     if (mi > 0.0) {
       const double T0 = -fi.energy_in / (mi * cp_in_), dm = mi * dt;
       double xb = 0.0;
-      if (back_m_[k] > 0.0) {
-        const double take = std::min(back_m_[k], dm);
-        xb = back_xb_[k] * take / dm;
-        back_m_[k] -= take;
+      if (s.back_m > 0.0) {
+        const double take = std::min(s.back_m, dm);
+        xb = s.back_xb * take / dm;
+        s.back_m -= take;
       }
       pf.intake = {mi, mi * c.enthalpyOf(T0, xb), xb};
     } else if (mi < 0.0) {
       const double dm = -mi * dt, xbc = c.burnedFraction();
-      back_xb_[k] = (back_m_[k] * back_xb_[k] + dm * xbc) / (back_m_[k] + dm);
-      back_m_[k] += dm;
+      s.back_xb = (s.back_m * s.back_xb + dm * xbc) / (s.back_m + dm);
+      s.back_m += dm;
       pf.intake = {mi, mi * c.specificEnthalpy_J_kg(), 0.0};
     }
-    const gasdyn::EndFlux& fe = run_ex_[k]->endFlux(End::Left);
+    const gasdyn::EndFlux& fe = s.run_ex->endFlux(End::Left);
     const double me = -fe.mdot_in;
-    const int bank = k < 3 ? 0 : 1;
+    const int bank = s.bank;
     if (me > 0.0) {
       const double T0 = -fe.energy_in / (me * cp_ex_), xb = xb_bank_[bank];
       pf.exhaust = {me, me * c.enthalpyOf(T0, xb), xb};
@@ -311,23 +317,23 @@ void EngineAssembly::coupledStep(double dt, double omega) {
 
     const int cycles = c.cyclesCompleted();
     double dW, dQ;
-    if (cycles != prev_cycles_[k]) {
-      const cyl::CycleResults& r = c.lastCycle();
-      dW = r.work_net_J - prev_work_[k] + c.workThisCycle_J();
-      dQ = r.heat_wall_J - prev_wall_[k] + c.wallHeatThisCycle_J();
+    if (cycles != s.prev_cycles) {
+      const cylinder::CycleResults& r = c.lastCycle();
+      dW = r.work_net_J - s.prev_work + c.workThisCycle_J();
+      dQ = r.heat_wall_J - s.prev_wall + c.wallHeatThisCycle_J();
       nox += r.nox_no2eq_kg;
-      prev_cycles_[k] = cycles;
+      s.prev_cycles = cycles;
     } else {
-      dW = c.workThisCycle_J() - prev_work_[k];
-      dQ = c.wallHeatThisCycle_J() - prev_wall_[k];
+      dW = c.workThisCycle_J() - s.prev_work;
+      dQ = c.wallHeatThisCycle_J() - s.prev_wall;
     }
-    prev_work_[k] = c.workThisCycle_J();
-    prev_wall_[k] = c.wallHeatThisCycle_J();
+    s.prev_work = c.workThisCycle_J();
+    s.prev_wall = c.wallHeatThisCycle_J();
     double inj = 0.0;
-    for (int i = 0; i < 3; ++i) inj += c.pulseInjected_kg(i);
-    if (inj < prev_inj_[k]) prev_inj_[k] = 0.0;
-    fuel += inj - prev_inj_[k];
-    prev_inj_[k] = inj;
+    for (int i = 0; i < 3; ++i) inj += c.pulseInjected_kg(i);  // the cylinder's injection pulses
+    if (inj < s.prev_inj) s.prev_inj = 0.0;
+    fuel += inj - s.prev_inj;
+    s.prev_inj = inj;
     work += dW;
     wall += dQ;
   }
@@ -363,9 +369,9 @@ void EngineAssembly::coupledStep(double dt, double omega) {
   x[kFuel] = fuel / dt;
   x[kWallHeat] = wall / dt;
   x[kNox] = nox / dt;
-  window_.add(dt, omega * dt / kDeg, x);
+  window_.add(dt, omega * dt / kRad_per_deg, x);
   t_ += dt;
   ++steps_;
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -1,15 +1,19 @@
-// Gas-dynamic assembly of the 6-cylinder engine (SPEC §3), crank-angle resolved.
+// Gas-dynamic assembly of the n-cylinder engine (SPEC §3: n = 6), crank-angle resolved.
 //
 // Layout (two gasdyn networks, intake air gamma 1.4, exhaust gamma 1.33; they exchange gas only
 // through the cylinders):
 //   air-filter box (reservoir: p_1 = p_amb - K_af mdot^2 T/p, T_amb)
 //     -> CompressorOutlet (turbo compressor map) -> compressor-outlet pipe (hot)
 //     -> ChargeAirCoolerLink (air-to-air, eps(mdot), cooling air at T_amb, dp = K mdot^2 T/p)
-//     -> charge-air duct pipe -> intake plenum (Volume) -> 6 runners -> Valve (2 intake valves)
+//     -> charge-air duct pipe -> intake plenum (Volume) -> n runners -> Valve (2 intake valves)
 //     -> cylinder k (0D, src/cylinder; seen by the valves as a reservoir at its p, T)
-//     -> Valve (2 exhaust valves) -> exhaust runner k -> bank collector (Volume; cyl 1-3, 4-6)
+//     -> Valve (2 exhaust valves) -> exhaust runner k -> bank collector b(k) (Volume)
 //     -> turbine-inlet pipe -> TurbineEntry 0 (with wastegate) / 1 -> turbine-outlet Volume
 //     -> downpipe -> back-pressure reservoir (input, or p_amb + K_b mdot^2 T/p).
+// Cylinders (config engine_1d/cylinders, firing_order, exhaust_bank): n cylinders, the j-th of
+// the firing order at engine crank angle phase = j 720/n deg (cylinder 1 of a 1-5-3-6-2-4 six at
+// 0), b(k) = exhaust_bank[k] - 1 (shipped: cylinders 1-3 -> entry 0, 4-6 -> entry 1). Sized once
+// at construction; nothing is allocated in a step.
 // Turbo shaft: J w dw/dt = eta_m P_t - P_c - k_f w^2 (turbo::TurboShaft), P_t and P_c the
 // boundaries' powers, stepped with the network step.
 //
@@ -35,6 +39,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cylinder/cylinder.hpp"
 #include "engine_1d/cycle_window.hpp"
@@ -44,7 +49,7 @@
 #include "gasdyn/network.hpp"
 #include "turbo/turbo_config.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 /// Channels of the one-cycle window (rates; means over the last 720 deg).
 enum Channel {
@@ -112,8 +117,14 @@ class EngineAssembly {
   double airFilterPressure() const { return filter_->p(); }
   long steps() const { return steps_; }
   double time() const { return t_; }
-  const cyl::Cylinder& cylinder(int i) const { return *cyl_[i]; }
-  cyl::Cylinder& cylinder(int i) { return *cyl_[i]; }
+  int cylinders() const { return static_cast<int>(cyl_.size()); }
+  /// Swept volume of all cylinders [m^3].
+  double displacement_m3() const;
+  /// Firing angle of cylinder i (0-based) on the engine crank [deg]: its firing TDC when the
+  /// engine crank (cylinder 1's firing TDC = 0) is there.
+  double firingPhase_deg(int i) const { return cyl_[i].phase_deg; }
+  const cylinder::Cylinder& cylinder(int i) const { return *cyl_[i].cyl; }
+  cylinder::Cylinder& cylinder(int i) { return *cyl_[i].cyl; }
   gasdyn::Network& intakeNetwork() { return intake_; }
   gasdyn::Network& exhaustNetwork() { return exhaust_; }
   const Engine1DParams& params() const { return P_; }
@@ -127,19 +138,28 @@ class EngineAssembly {
   gasdyn::Pipe& pipe(gasdyn::Network& n, const std::string& name, const PipeSpec& s,
                      double friction, bool hot);
 
+  /// One cylinder with its valves, runners and bookkeeping (elements owned by the networks).
+  struct CylinderSlot {
+    std::unique_ptr<cylinder::Cylinder> cyl;
+    double phase_deg = 0.0;  // firing angle on the engine crank [deg]
+    int bank = 0;            // turbine entry / bank collector (0, 1)
+    gasdyn::Volume *res_in = nullptr, *res_ex = nullptr;  // the cylinder as its valves see it
+    CrankValveArea *area_in = nullptr, *area_ex = nullptr;
+    gasdyn::Pipe *run_in = nullptr, *run_ex = nullptr;
+    double back_m = 0.0, back_xb = 0.0;  // intake back-flow buffer [kg], burned fraction [-]
+    double prev_work = 0.0, prev_wall = 0.0, prev_inj = 0.0;  // at the last step [J], [J], [kg]
+    int prev_cycles = 0;
+  };
+
   Engine1DParams P_;
   const turbo::Turbocharger& tc_;
   turbo::TurboShaft shaft_;
   gasdyn::Network intake_, exhaust_;
-  std::array<std::unique_ptr<cyl::Cylinder>, 6> cyl_;
-  std::array<double, 6> phase_deg_{};  // firing angle of each cylinder (engine crank)
+  std::vector<CylinderSlot> cyl_;  // engine_1d/cylinders of them, sized by the constructor
   // elements (owned by the networks)
   gasdyn::Volume *filter_ = nullptr, *plenum_ = nullptr, *turb_out_ = nullptr, *back_ = nullptr;
   std::array<gasdyn::Volume*, 2> junction_{};
-  std::array<gasdyn::Volume*, 6> res_in_{}, res_ex_{};
-  std::array<CrankValveArea*, 6> area_in_{}, area_ex_{};
   gasdyn::Pipe *comp_pipe_ = nullptr, *cac_pipe_ = nullptr, *down_pipe_ = nullptr;
-  std::array<gasdyn::Pipe*, 6> run_in_{}, run_ex_{};
   std::array<gasdyn::Pipe*, 2> turb_pipe_{};
   gasdyn::CompressorOutlet* comp_ = nullptr;
   std::array<gasdyn::TurbineEntry*, 2> turb_{};
@@ -147,10 +167,6 @@ class EngineAssembly {
   ChargeAirCoolerLink* cac_ = nullptr;
   std::shared_ptr<CompressorFlowMap> comp_map_;
   std::array<std::shared_ptr<TurbineFlowMap>, 2> turb_map_;
-  // per-cylinder bookkeeping
-  std::array<double, 6> back_m_{}, back_xb_{};     // intake back-flow buffer [kg], [-]
-  std::array<double, 6> prev_work_{}, prev_wall_{}, prev_inj_{};
-  std::array<int, 6> prev_cycles_{};
   CycleWindow<kNumChannels> window_;
   EnergyTotals totals_;
   double fric_torque_ = 0.0, t_ = 0.0, T_amb_ = 298.15, cp_in_ = 1004.5, cp_ex_ = 1160.0;
@@ -160,4 +176,4 @@ class EngineAssembly {
   long steps_ = 0;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -6,7 +6,7 @@
 #pragma once
 #include "gasdyn/characteristics.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 /// Outflow face with demand(p0_face, T0_face) [kg/s]; `guess` = outflow velocity of the last call.
 template <class Demand>
@@ -22,4 +22,4 @@ gasdyn::FaceState warmInflowFace(const PerfectGas& gas, const gasdyn::EndState& 
   return gasdyn::warmDemandInflowFace(gas, s, demand, guess);
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -7,12 +7,12 @@
 #include "gasdyn/boundaries.hpp"
 #include "gasdyn/characteristics.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 namespace {
 constexpr double kStep = 0.25;  // deg
 }  // namespace
 
-CrankValveArea::CrankValveArea(const cyl::Cylinder& c, const ValveSpec& v, double open_deg,
+CrankValveArea::CrankValveArea(const cylinder::Cylinder& c, const ValveSpec& v, double open_deg,
                                double close_deg, bool normal_is_forward)
     : cyl_(c), v_(v), open_(open_deg) {
   duration_ = std::fmod(close_deg - open_deg + 1440.0, 720.0);
@@ -55,7 +55,7 @@ void CrankValveArea::areas(double th, double& fwd, double& rev) const {
 
 double CrankValveArea::areaAt(double th, bool forward) const {
   double f, r;
-  areas(cyl::wrapCycleDeg(th), f, r);
+  areas(cylinder::wrapCycleDeg(th), f, r);
   return forward ? f : r;
 }
 
@@ -163,4 +163,4 @@ void ChargeAirCoolerLink::computeFluxes(double) {
   mdot_ = forward ? mdot : -mdot;
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

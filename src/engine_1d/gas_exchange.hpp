@@ -30,12 +30,12 @@
 #include "gasdyn/volume.hpp"
 #include "turbo/intercooler.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 class CrankValveArea final : public gasdyn::AreaProvider {
  public:
   /// open/close [deg, cylinder crank angle]; normal_is_forward: exhaust true, intake false.
-  CrankValveArea(const cyl::Cylinder& cylinder, const ValveSpec& v, double open_deg,
+  CrankValveArea(const cylinder::Cylinder& cylinder, const ValveSpec& v, double open_deg,
                  double close_deg, bool normal_is_forward);
   double effectiveArea(gasdyn::FlowDirection dir, double t) const override;
   double areaAt(double theta_deg, bool forward) const;
@@ -52,7 +52,7 @@ class CrankValveArea final : public gasdyn::AreaProvider {
 
  private:
   void areas(double theta_deg, double& forward, double& reverse) const;
-  const cyl::Cylinder& cyl_;
+  const cylinder::Cylinder& cyl_;
   ValveSpec v_;
   double open_, duration_, lead_ = 0.0;
   std::vector<double> tab_;  // (forward, reverse) pairs over phi = 0 ... Delta, step kStep
@@ -95,4 +95,4 @@ class ChargeAirCoolerLink final : public gasdyn::Boundary {
   double T_cool_ = 298.15, mdot_ = 0.0, heat_W_ = 0.0, heat_J_ = 0.0, T0_out_ = 298.15;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

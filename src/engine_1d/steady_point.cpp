@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <vector>
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 namespace {
 constexpr double kRpm = M_PI / 30.0;
 
@@ -106,4 +106,4 @@ bool BsfcValidationRegion::contains(double rpm, double load, std::string* reason
   return !slow && !light;
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -14,7 +14,7 @@
 
 #include "engine_1d/engine_1d.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 struct SteadyPointOptions {
   double dt_s = 0.02;             // macro step [s]
@@ -44,4 +44,4 @@ struct BsfcValidationRegion {
   bool contains(double rpm, double load, std::string* reason = nullptr) const;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

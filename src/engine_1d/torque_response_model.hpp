@@ -19,7 +19,7 @@
 #include <algorithm>
 #include <array>
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 class TorqueResponseModel {
  public:
@@ -69,4 +69,4 @@ class TorqueResponseModel {
   int n_ = 0, head_ = 0;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -5,7 +5,7 @@
 
 #include "common/units.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 namespace {
 constexpr int kPsiPoints = 2001;
 }
@@ -105,4 +105,4 @@ double TurbineFlowMap::efficiency(double p0, double T0, double p_down, double w)
   return (eta > 0.0 ? eta : 0.0) * me / (me + mw);
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -24,7 +24,7 @@
 #include "turbo/compressor.hpp"
 #include "turbo/turbine.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 /// Regular bilinear grid, clamped at the edges.
 class Grid2D {
@@ -92,4 +92,4 @@ class TurbineFlowMap final : public gasdyn::FlowMap {
   bool has_wg_;
 };
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

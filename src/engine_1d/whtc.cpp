@@ -6,7 +6,7 @@
 #include "common/csv_table.hpp"
 #include "common/errors.hpp"
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 GtrReferenceSpeeds gtrReferenceSpeeds(const std::function<double(double)>& fl, double n_idle,
                                       double n_max) {
@@ -112,4 +112,4 @@ RegressionLimits powerLimits(double pmax) {
   return {0.10 * pmax, 0.83, 1.03, 0.910, std::max(4000.0, 0.02 * pmax)};
 }
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-namespace hbt::engine1d {
+namespace hbt::engine_1d {
 
 struct GtrReferenceSpeeds {
   double n_idle = 0, n_lo = 0, n_hi = 0, n_95h = 0, n_pref = 0, p_max_W = 0, n_pmax = 0;  // rpm, W
@@ -59,4 +59,4 @@ RegressionLimits torqueLimits(double t_max_Nm);
 RegressionLimits speedLimits(double n_max_rpm);
 RegressionLimits powerLimits(double p_max_W);
 
-}  // namespace hbt::engine1d
+}  // namespace hbt::engine_1d

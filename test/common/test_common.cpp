@@ -1,5 +1,6 @@
 // Tests of the shared helpers: CSV reader errors name file and key; Table1D interpolation is
-// exact on linear data; PID anti-windup keeps the integral bounded under saturation.
+// exact on linear data; PID anti-windup keeps the integral bounded under saturation; the angle
+// conversions of common/units.hpp have the bits of the M_PI expressions they replaced.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "common/errors.hpp"
 #include "common/pid.hpp"
 #include "common/table1d.hpp"
+#include "common/units.hpp"
 
 namespace {
 
@@ -63,6 +65,21 @@ TEST(CsvTable, MissingColumnNamesKey) {
   } catch (const hbt::InputError& e) {
     EXPECT_EQ(e.key(), "stop");
   }
+}
+
+// The models' former local constants (M_PI / 180.0, 180.0 / M_PI): replaced by these, every
+// product or quotient keeps its bits.
+static_assert(hbt::units::kPi == M_PI);
+static_assert(hbt::units::kRad_per_deg == M_PI / 180.0);
+static_assert(hbt::units::kDeg_per_rad == 180.0 / M_PI);
+
+TEST(Units, AngleConversionsHaveTheFormerBits) {
+  using namespace hbt::units;
+  // the rig's former `step_deg * M_PI / 180.0` (left to right) for the steps the rig and its
+  // tests use: identical to step_deg * kRad_per_deg (not so for every double: 0.011, e.g.)
+  for (double d : {0.05, 0.1, 0.2, 0.5, 1.0, 2.0}) EXPECT_EQ(degToRad(d), d * M_PI / 180.0) << d;
+  for (double r : {1e-3, 0.25, 3.0}) EXPECT_EQ(radToDeg(r), r * (180.0 / M_PI)) << r;
+  EXPECT_EQ(radToDeg(degToRad(90.0)), 90.0);
 }
 
 TEST(Table1D, ExactOnLinearDataAndClamped) {

@@ -8,7 +8,7 @@
 #include "cylinder/rig.hpp"
 #include "common/yaml_params.hpp"
 
-namespace hbt::cyl::test {
+namespace hbt::cylinder::test {
 
 inline std::string sourceDir() {
   const char* s = std::getenv("HBT_SOURCE_DIR");
@@ -26,4 +26,4 @@ inline CylinderParams loadParams(RigParams* rig = nullptr) {
   return cp;
 }
 
-}  // namespace hbt::cyl::test
+}  // namespace hbt::cylinder::test

@@ -7,7 +7,7 @@
 #include "cylinder/cylinder_params.hpp"
 #include "cylinder/losses.hpp"
 
-using namespace hbt::cyl;
+using namespace hbt::cylinder;
 
 namespace {
 // Crank angle where the numerically integrated burn rate reaches x (Simpson, then bisection).

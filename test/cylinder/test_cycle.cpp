@@ -5,14 +5,15 @@
 #include <cmath>
 #include <vector>
 
+#include "common/units.hpp"
 #include "cylinder/cylinder.hpp"
 #include "support.hpp"
 
-using namespace hbt::cyl;
+using namespace hbt::cylinder;
 
 namespace {
 constexpr double kOmega = 1400.0 * M_PI / 30.0;
-double dtFor(double deg) { return deg * M_PI / 180.0 / kOmega; }
+double dtFor(double deg) { return hbt::units::degToRad(deg) / kOmega; }
 double sensibleU(const Cylinder& c) {
   double m[kNumGroups];
   for (int g = 0; g < kNumGroups; ++g) m[g] = c.unburnedGroupMass(Group(g));

@@ -6,7 +6,7 @@
 #include "cylinder/equilibrium.hpp"
 #include "cylinder/zeldovich.hpp"
 
-using namespace hbt::cyl;
+using namespace hbt::cylinder;
 
 namespace {
 // Element moles per kg of the products of diesel burned at air excess λ (groups of thermo.hpp).

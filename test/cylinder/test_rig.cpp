@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 #include "cylinder/rig.hpp"
 #include "support.hpp"
 
-using namespace hbt::cyl;
+using namespace hbt::cylinder;
 
 namespace {
 double noxGPerKWh(const CycleResults& r) {
@@ -44,7 +45,7 @@ const CycleResults& runOneCycleEnergyCheck(SingleCylinderRig& rig, const Cylinde
   };
   const double U0 = U();
   double H = 0.0;
-  const double dt = rp.step_deg * M_PI / 180.0 / (rp.speed_rpm * M_PI / 30.0);
+  const double dt = hbt::units::degToRad(rp.step_deg) / (rp.speed_rpm * M_PI / 30.0);
   const int start = c.cyclesCompleted();
   while (c.cyclesCompleted() == start) {
     const PortFlows f = rig.step();
@@ -201,7 +202,7 @@ TEST(Rig, CostPerCylinderStep) {
     rp.step_deg = step;
     SingleCylinderRig rig(cp, rp);
     rig.runCycles(2);
-    const double omega = rp.speed_rpm * M_PI / 30.0, dt = rp.step_deg * M_PI / 180.0 / omega;
+    const double omega = rp.speed_rpm * M_PI / 30.0, dt = hbt::units::degToRad(rp.step_deg) / omega;
     const int n = static_cast<int>(std::lround(4 * 720 / rp.step_deg));
     std::vector<PortFlows> flows;
     flows.reserve(n);

@@ -7,7 +7,7 @@
 #include "cylinder/thermo.hpp"
 #include "support.hpp"
 
-using namespace hbt::cyl;
+using namespace hbt::cylinder;
 
 TEST(Thermo, SpeciesDataMatchJanafAt298K) {
   // NIST-JANAF tables (Chase 1998): cp [J/mol K], Δf H° [kJ/mol], S° [J/mol K] at 298.15 K.

@@ -33,7 +33,7 @@ std::vector<std::unique_ptr<engine::EngineModel>> bothModels() {
   applyParams(ps, readYamlParams(repoRoot() + "/config/engine_map.yaml"));
   std::vector<std::unique_ptr<engine::EngineModel>> m;
   m.push_back(std::make_unique<engine_map::MapEngineModel>(mp, repoRoot()));
-  m.push_back(std::make_unique<engine1d::Engine1DModel>(engine1d::Engine1DParams::load(repoRoot()), repoRoot()));
+  m.push_back(std::make_unique<engine_1d::Engine1DModel>(engine_1d::Engine1DParams::load(repoRoot()), repoRoot()));
   return m;
 }
 

@@ -64,7 +64,7 @@ std::unique_ptr<engine::EngineModel> makeEngine(const std::string& name) {
     applyParams(ps, readYamlParams(repoRoot() + "/config/engine_map.yaml"));
     return std::make_unique<engine_map::MapEngineModel>(mp, repoRoot());
   }
-  return std::make_unique<engine1d::Engine1DModel>(engine1d::Engine1DParams::load(repoRoot()),
+  return std::make_unique<engine_1d::Engine1DModel>(engine_1d::Engine1DParams::load(repoRoot()),
                                                    repoRoot());
 }
 

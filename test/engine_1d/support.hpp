@@ -7,7 +7,7 @@
 
 #include "engine_1d/engine_1d.hpp"
 
-namespace hbt::engine1d::test {
+namespace hbt::engine_1d::test {
 
 inline std::string repoRoot() {
   const char* d = std::getenv("HBT_SOURCE_DIR");
@@ -39,4 +39,4 @@ inline double bsfc(double fuel_kg_s, double torque, double w) {
   return fuel_kg_s / (torque * w) * 3.6e9;
 }
 
-}  // namespace hbt::engine1d::test
+}  // namespace hbt::engine_1d::test

@@ -17,8 +17,8 @@ void* operator new(std::size_t n) {
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 TEST(Engine1DAlloc, StepDoesNotAllocate) {
   Engine1D e(defaultParams(), repoRoot());

@@ -13,8 +13,8 @@
 #include "engine_1d/steady_point.hpp"
 #include "support.hpp"
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 TEST(Engine1DBsfcRegion, RegionLimitsComeFromConfigAndFlagTheRest) {
   const Engine1DParams& p = defaultParams();

@@ -11,8 +11,8 @@
 #include "engine_1d/whtc.hpp"
 #include "support.hpp"
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 namespace {
 const hbt::turbo::Turbocharger& turbo() {
@@ -59,7 +59,7 @@ TEST(Engine1DComponents, TabulatedTurbineAndWastegateMatchDirectLookup) {
 
 TEST(Engine1DComponents, ValveAreaFollowsLiftAndTiming) {
   const Engine1DParams& p = defaultParams();
-  hbt::cyl::Cylinder c(p.cylinder, "c");
+  hbt::cylinder::Cylinder c(p.cylinder, "c");
   CrankValveArea iv(c, p.engine.intake_valve, p.cylinder.ivo_deg, p.cylinder.ivc_deg, false);
   CrankValveArea ev(c, p.engine.exhaust_valve, p.cylinder.evo_deg, p.cylinder.evc_deg, true);
   EXPECT_EQ(iv.areaAt(0.0, false), 0.0);    // firing TDC: both closed

@@ -8,8 +8,8 @@
 #include "engine_1d/torque_response_model.hpp"
 #include "support.hpp"
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 TEST(Engine1DControl, TorquePidReachesRequestAfterAChange) {
   Engine1D e(defaultParams(), repoRoot());

@@ -11,9 +11,9 @@
 #include "support.hpp"
 
 using namespace hbt;
-using namespace hbt::engine1d;
-using hbt::engine1d::test::defaultParams;
-using hbt::engine1d::test::repoRoot;
+using namespace hbt::engine_1d;
+using hbt::engine_1d::test::defaultParams;
+using hbt::engine_1d::test::repoRoot;
 
 namespace {
 

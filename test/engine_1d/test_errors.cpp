@@ -9,8 +9,8 @@
 #include "common/errors.hpp"
 #include "support.hpp"
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 namespace {
 std::string readFile(const std::string& path) {
@@ -67,6 +67,48 @@ TEST(Engine1DErrors, UnknownKeyAndBadSolverAreRejected) {
   }
   const std::string h = writeVariant("cd_normal: [0.72, 0.70, 0.67", "cd_normal: [0.70, 0.67", "cd");
   EXPECT_THROW(Engine1DParams::load(repoRoot(), h), hbt::InputError);
+}
+
+TEST(Engine1DErrors, CylinderCountFiringOrderAndBanksAreCheckedAtLoad) {
+  struct Case {
+    const char *from, *to, *name, *key, *says;
+  };
+  const char* fo = "firing_order: [1, 5, 3, 6, 2, 4]";
+  const char* eb = "exhaust_bank: [1, 1, 1, 2, 2, 2]";
+  const Case cases[] = {
+      {"cylinders: 6", "cylinders: 13", "cyl_13", "engine_1d/cylinders", "range"},
+      {"cylinders: 6", "cylinders: 0", "cyl_0", "engine_1d/cylinders", "range"},
+      {"cylinders: 6", "cylinders: 6.5", "cyl_frac", "engine_1d/cylinders", "integer"},
+      {"cylinders: 6", "cylinders: 5", "cyl_5", "engine_1d/firing_order", "permutation of 1..5"},
+      {fo, "firing_order: [1, 5, 3, 6, 2]", "fo_short", "engine_1d/firing_order", "permutation"},
+      {fo, "firing_order: [1, 5, 3, 6, 2, 2]", "fo_twice", "engine_1d/firing_order", "permutation"},
+      {fo, "firing_order: [1, 5, 3, 6, 2, 4.5]", "fo_frac", "engine_1d/firing_order", "permutation"},
+      {eb, "exhaust_bank: [1, 1, 1, 2, 2]", "eb_short", "engine_1d/exhaust_bank", "6 values, got 5"},
+      {eb, "exhaust_bank: [1, 1, 1, 2, 2, 3]", "eb_3", "engine_1d/exhaust_bank", "range"},
+      {eb, "exhaust_bank: [1, 1, 1.5, 2, 2, 2]", "eb_frac", "engine_1d/exhaust_bank", "cylinder 3"},
+      {eb, "exhaust_bank: [1, 1, 1, 1, 1, 1]", "eb_unfed", "engine_1d/exhaust_bank", "entry 2 has no cylinder"},
+  };
+  for (const Case& c : cases) {
+    const std::string f = writeVariant(c.from, c.to, c.name);
+    try {
+      Engine1DParams::load(repoRoot(), f);
+      ADD_FAILURE() << "no InputError for " << c.to;
+    } catch (const hbt::InputError& e) {
+      EXPECT_EQ(e.file(), f) << c.to;
+      EXPECT_EQ(e.key(), c.key) << c.to << ": " << e.what();
+      EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
+    }
+  }
+  // parameters filled in code are checked by the engine before it builds anything
+  Engine1DParams p = defaultParams();
+  p.engine.cylinders = 4;
+  try {
+    Engine1D e(p, repoRoot());
+    ADD_FAILURE() << "no InputError";
+  } catch (const hbt::InputError& e) {
+    EXPECT_EQ(e.file(), p.engine_source);
+    EXPECT_EQ(e.key(), "engine_1d/firing_order");
+  }
 }
 
 TEST(Engine1DErrors, SubFilesAreReadBesideTheEngineFile) {

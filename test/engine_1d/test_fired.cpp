@@ -6,8 +6,8 @@
 
 #include "support.hpp"
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 TEST(Engine1DFired, MidLoadBsfcWithinBandOfReferenceMap) {
   Engine1D e(defaultParams(), repoRoot());

@@ -6,8 +6,8 @@
 
 #include "support.hpp"
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 TEST(Engine1DMotored, VolumetricEfficiencyAndMotoringTorque) {
   Engine1D e(defaultParams(), repoRoot());
@@ -17,7 +17,7 @@ TEST(Engine1DMotored, VolumetricEfficiencyAndMotoringTorque) {
   // speed-density: mdot = eta_v rho_im V_d n/2, rho_im from the plenum cycle means
   const double R = defaultParams().turbo.air_gas_constant;
   const double rho = o.boost_pressure_Pa / (R * o.intake_manifold_T_K);
-  const double mdot_sd = rho * 6.72e-3 * rpm / 120.0;
+  const double mdot_sd = rho * e.assembly().displacement_m3() * rpm / 120.0;
   const double eta_v = o.air_mass_flow_kg_s / mdot_sd;
   std::printf("motored 1400 rpm: air %.4f kg/s, p_im %.0f Pa, T_im %.1f K, eta_v %.3f, "
               "T_b %.1f Nm (reference motoring %.1f Nm), pmax %.1f bar\n",

@@ -11,8 +11,8 @@
 #include "engine_1d/steady_point.hpp"
 #include "support.hpp"
 
-using namespace hbt::engine1d;
-using namespace hbt::engine1d::test;
+using namespace hbt::engine_1d;
+using namespace hbt::engine_1d::test;
 
 TEST(Engine1DNox, MapEngineNoxMapReproducesThe1DEngineAtSteadyPoints) {
   Engine1DParams p = defaultParams();

@@ -27,13 +27,13 @@ std::unique_ptr<EngineModel> make1D(const ros::NodeHandle& pnh, const std::strin
     it = node_key ? own.values.erase(it) : std::next(it);
   }
   if (own.values.empty()) throw InputError(file, "engine_1d", "no parameters: the file is empty or was not loaded");
-  engine1d::Engine1DParams p = engine1d::Engine1DParams::load(own, file);
+  engine_1d::Engine1DParams p = engine_1d::Engine1DParams::load(own, file);
   std::string solver;
   if (pnh.getParam("solver", solver) && !solver.empty()) {
     p.engine.solver = solver;
     p.validate();
   }
-  return std::make_unique<engine1d::Engine1DModel>(p, pkg);
+  return std::make_unique<engine_1d::Engine1DModel>(p, pkg);
 }
 
 }  // namespace

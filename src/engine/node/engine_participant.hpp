@@ -2,7 +2,7 @@
 // launch argument engine): converts messages and parameters, nothing else. Models behind the
 // ROS-free interface engine::EngineModel (../engine_model.hpp: its units, equations and the start,
 // ambient, loop and exhaust-temperature policies): engine_map::MapEngineModel (VECTO maps + PT1
-// torque build-up) and engine1d::Engine1DModel (crank-angle-resolved 1D engine), built by
+// torque build-up) and engine_1d::Engine1DModel (crank-angle-resolved 1D engine), built by
 // makeEngineModel (engine_model_factory.hpp).
 //
 // Inputs  (stamped t_k): /vehicle/engine_command (EngineCommand: imposed speed, torque request,

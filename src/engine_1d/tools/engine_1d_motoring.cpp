@@ -22,12 +22,10 @@
 
 #include "engine_1d/engine_1d.hpp"
 
-using namespace hbt::engine1d;
+using namespace hbt::engine_1d;
 
 namespace {
 constexpr double kRpm = M_PI / 30.0;
-constexpr double kVd = 6.72e-3;  // displacement [m^3] (SPEC §3)
-double toBar(double torque_Nm) { return torque_Nm * 4.0 * M_PI / kVd / 1e5; }
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,6 +62,9 @@ int main(int argc, char** argv) {
   try {
     Engine1DParams p = Engine1DParams::load(root, config);
     Engine1D eng(p, root);
+    // mean effective pressure [bar] of a torque [Nm] over the swept volume of all cylinders
+    const double Vd_m3 = eng.assembly().displacement_m3();
+    auto toBar = [Vd_m3](double torque_Nm) { return torque_Nm * 4.0 * M_PI / Vd_m3 / 1e5; };
     if (!fired.empty()) {
       const double dt = 0.02;
       std::printf("  rpm  load  T_b   BSFC  ref   err%%  | IMEPg IMEPn PMEP FMEP  pmax@deg   SOC  ID  CA10 CA50 "

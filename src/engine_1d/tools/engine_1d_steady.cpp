@@ -27,7 +27,7 @@
 #include "engine_1d/engine_1d.hpp"
 #include "engine_1d/steady_point.hpp"
 
-using namespace hbt::engine1d;
+using namespace hbt::engine_1d;
 
 namespace {
 constexpr double kRpm = M_PI / 30.0;
@@ -140,13 +140,13 @@ int main(int argc, char** argv) {
       }
       // Loss split and combustion phasing: mean over the cylinders' last complete cycles.
       double imep_g = 0, pmep = 0, eta_g = 0, ca50 = 0, delay = 0;
-      const int ncyl = 6;
+      const int ncyl = eng.assembly().cylinders();
       for (int c = 0; c < ncyl; ++c) {
         const auto& r = eng.assembly().cylinder(c).lastCycle();
         imep_g += r.imep_gross_Pa / ncyl, pmep += r.pmep_Pa / ncyl, eta_g += r.eta_ind_gross / ncyl;
         ca50 += r.ca50_deg / ncyl, delay += r.ignition_delay_main_deg / ncyl;
       }
-      const double Vd_m3 = ncyl * hbt::cyl::SliderCrank(eng.assembly().cylinder(0).params().geometry).displacement();
+      const double Vd_m3 = eng.assembly().displacement_m3();
       const double fmep = o->friction_torque_Nm * 4.0 * M_PI / Vd_m3;
       csv << q.rpm << "," << q.load << "," << treq << "," << Tb << "," << bsfc << "," << bref << ","
           << err << "," << fuel << "," << fref << "," << o->air_mass_flow_kg_s << "," << o->lambda

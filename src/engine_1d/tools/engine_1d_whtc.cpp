@@ -27,7 +27,7 @@
 #include "engine_1d/engine_1d.hpp"
 #include "engine_1d/whtc.hpp"
 
-using namespace hbt::engine1d;
+using namespace hbt::engine_1d;
 
 namespace {
 constexpr double kRpm = M_PI / 30.0;
