@@ -18,6 +18,7 @@
 
 using namespace hbt;
 using namespace hbt::battery;
+using hbt::testing::expectInputError;
 using units::celsiusToK;
 
 namespace {
@@ -486,13 +487,7 @@ TEST(BatteryParams, YamlMatchesDeclarationAndBadValuesRejected) {
   expectKey(bad, "pack/cells_in_series");
 
   auto expectModelKey = [&](const BatteryParams& q, const std::string& file, const std::string& key) {
-    try {
-      BatteryModel m(q, "battery.yaml");
-      FAIL() << "no InputError for " << key;
-    } catch (const InputError& e) {
-      EXPECT_EQ(e.file(), file) << e.what();
-      EXPECT_EQ(e.key(), key) << e.what();
-    }
+    expectInputError([&] { BatteryModel m(q, "battery.yaml"); }, file, key);
   };
   const BatteryParams y = yamlParams();
   BatteryParams q = y;
@@ -527,12 +522,7 @@ TEST(BatteryParams, YamlMatchesDeclarationAndBadValuesRejected) {
   q.cell.table_file = writeTable("bad_dup.csv", ok, "0.5,250,3.75,0.01,0.005,30\n");  // wrong row count
   expectModelKey(q, q.cell.table_file, "SOC");
   q.cell.table_file = writeTable("bad_nan.csv", ok, "0.25,250,nan,0.01,0.005,30\n");
-  try {
-    BatteryModel m(q);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), q.cell.table_file);
-  }
+  expectInputError([&] { BatteryModel m(q); }, q.cell.table_file, "OCV");
 }
 
 TEST(BatteryModel, StepDoesNotAllocate) {

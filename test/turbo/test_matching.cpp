@@ -12,6 +12,7 @@
 #include <map>
 
 #include "../common/alloc_counter.hpp"
+#include "../common/input_errors.hpp"
 #include "common/csv_table.hpp"
 #include "common/errors.hpp"
 #include "common/params.hpp"
@@ -182,26 +183,19 @@ TEST(Config, YamlFileLoadsAndMatchesBuiltInDefaults) {
   // misspelt key, out-of-range value, missing map file: errors name file and key
   auto src = hbt::readYamlParams(path);
   src.set("turbo/shaft/inertia_kgm2", 1e-4);
-  try { hbt::applyParams(ps, src); FAIL(); } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "turbo/shaft/inertia_kgm2");
-    EXPECT_EQ(e.file(), path);
-  }
+  hbt::testing::expectInputError([&] { hbt::applyParams(ps, src); }, path, "turbo/shaft/inertia_kgm2");
   src = hbt::readYamlParams(path);
   src.set("turbo/scaling/lambda", 0.5);
-  try { hbt::applyParams(ps, src); FAIL(); } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "turbo/scaling/lambda");
-  }
+  hbt::testing::expectInputError([&] { hbt::applyParams(ps, src); }, path, "turbo/scaling/lambda");
   TurboConfig bad = cfg;
   bad.turbine_map_file = "nowhere/turbine.csv";
-  try { buildTurbocharger(bad, repoRoot()); FAIL(); } catch (const hbt::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("nowhere/turbine.csv"), std::string::npos);
-  }
+  const std::string msg = hbt::testing::expectInputError([&] { buildTurbocharger(bad, repoRoot()); },
+                                                         dataPath("nowhere/turbine.csv"), "(file)");
+  EXPECT_NE(msg.find("nowhere/turbine.csv"), std::string::npos) << msg;
   TurboConfig pr = cfg;
   pr.scaling.rated_pressure_ratio = 4.49;  // ridge ends at 4.484
-  try { buildTurbocharger(pr, repoRoot()); FAIL(); } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "turbo/scaling/rated_pressure_ratio");
-    EXPECT_EQ(e.file(), path);
-  }
+  hbt::testing::expectInputError([&] { buildTurbocharger(pr, repoRoot()); }, path,
+                                 "turbo/scaling/rated_pressure_ratio");
 }
 
 TEST(Performance, LookupsAreCheapAndDoNotAllocate) {
