@@ -26,6 +26,7 @@
 // which gives the turbine-outlet (aftertreatment-inlet) temperature T_exh.
 // Engine-out NOx: emission-index estimate ṁ_NOx = EI_NOx · ṁ_f (as NO2 mass).
 #pragma once
+#include "common/units.hpp"
 
 namespace hbt::engine_map {
 
@@ -45,7 +46,7 @@ struct GasPathParams {
   double air_gamma = 1.4;                      // γ [-]
   double air_R_J_kgK = 287.05;                 // R [J/(kg K)]
   double fuel_h_to_c_molar = 1.86;             // y [-] (EN 590 diesel ≈ 1.8-1.9)
-  double fuel_lhv_J_kg = 42.7e6;               // LHV [J/kg] (VECTO diesel NCV)
+  double fuel_lhv_J_kg = units::kDieselLhv_J_kg;  // LHV [J/kg] (VECTO diesel NCV)
   double nox_emission_index_kg_per_kg = 0.024; // EI_NOx [kg NO2 / kg fuel]
 };
 

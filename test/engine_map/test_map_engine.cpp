@@ -224,7 +224,7 @@ TEST(MapEngine, CumulativeFuelAndWork) {
   const auto& o = e.outputs();
   EXPECT_NEAR(o.fuel_mass_kg, 10.0 * e.steadyFuel(w, 600.0), 1e-12);
   EXPECT_NEAR(o.brake_work_J, 10.0 * 600.0 * w, 1e-6);
-  EXPECT_NEAR(o.fuel_energy_J, o.fuel_mass_kg * 42.7e6, 1e-3);
+  EXPECT_NEAR(o.fuel_energy_J, o.fuel_mass_kg * units::kDieselLhv_J_kg, 1e-3);
   // NOx: the NOx map's emission index at this point x the fuel (steady: exact).
   EXPECT_NEAR(o.nox_mass_kg, e.noxEmissionIndex(w, 600.0) * o.fuel_mass_kg, 1e-12);
   EXPECT_GT(o.nox_mass_kg, 0.0);
