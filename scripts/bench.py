@@ -320,7 +320,7 @@ def main():
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     ap.add_argument("--duration", type=float, default=1800.0,
                     help="engine: WHTC seconds to run (default the whole 1800 s)")
-    ap.add_argument("--steps", type=int, default=60000, help="cosim: base steps per nodelets run")
+    ap.add_argument("--steps", type=int, default=200000, help="cosim: base steps per nodelets run")
     a = ap.parse_args()
     if a.what == "cosim":
         return bench_cosim.bench_cosim(a, REPO)

@@ -22,8 +22,9 @@ correction vanishes.
 """
 import numpy as np
 
+from twin_units import DIESEL_LHV_J_KG
+
 J_PER_KWH = 3.6e6
-LHV_J_KG = 42.7e6
 MODE_REGEN, MODE_STOPPED = 2, 4
 
 
@@ -90,7 +91,7 @@ def hybrid_summary(data, summary):
     if eng is not None:
         fuel = _l(eng, "fuel_mass_kg")
         pos = _l(eng, "positive_work_j")
-        eta_eng = pos / (fuel * LHV_J_KG) if fuel > 0 else 0.0
+        eta_eng = pos / (fuel * DIESEL_LHV_J_KG) if fuel > 0 else 0.0
         dE = -_l(bat, "chemical_energy_j")  # > 0: energy stored over the run
         gen = -_l(em, "mech_generating_energy_j")
         # charging chain: chemical energy stored per J of generating work (from the run's totals:
@@ -103,7 +104,7 @@ def hybrid_summary(data, summary):
         s["eta_charge_chain"] = eta_charge
         s["battery_energy_change_kwh"] = dE / J_PER_KWH
         if eta_eng > 0 and eta_charge > 0:
-            s["fuel_soc_corrected_kg"] = fuel - dE / (LHV_J_KG * eta_eng * eta_charge)
+            s["fuel_soc_corrected_kg"] = fuel - dE / (DIESEL_LHV_J_KG * eta_eng * eta_charge)
     return s
 
 

@@ -20,14 +20,15 @@ fuel energy leaves after brake work and coolant heat (exhaust enthalpy, radiatio
 so the fuel balance closes by definition; the driveline balance is checked: its residual is
 computed here from the individual terms, not taken from the vehicle's own residual field.
 The ledger is a flat dict of kWh designed to grow (e-machine, battery, pump: add keys to
-SINKS/SOURCES). Fuel LHV 42.7 MJ/kg (VECTO declaration value, diesel B7).
+SINKS/SOURCES). Fuel LHV: diesel, src/common/units.hpp (twin_units.DIESEL_LHV_J_KG).
 """
 import math
 
 import numpy as np
 
+from twin_units import DIESEL_LHV_J_KG
+
 J_PER_KWH = 3.6e6
-LHV_J_KG = 42.7e6
 # When the bus stands still at a stop: config/mission.yaml stop_service/ (hbt::mission::StopService),
 # taken from the run's resolved configuration (postprocess.stop_service); these defaults only
 # for bags written before the run info carried it.
@@ -74,7 +75,7 @@ def energy_ledger(data):
     if veh is None or eng is None:
         return None
     L = {}
-    fuel_J = _last(eng, "fuel_mass_kg") * LHV_J_KG
+    fuel_J = _last(eng, "fuel_mass_kg") * DIESEL_LHV_J_KG
     pos_J, mot_J = _last(eng, "positive_work_j"), _last(eng, "motoring_work_j")
     net_J = pos_J + mot_J
     coolant_J = _last(heat, "heat_to_coolant_j")
@@ -161,7 +162,7 @@ def ledger_table(L):
     """Markdown lines of the ledger."""
     fuel = L["fuel_chemical"]
     pct = (lambda x: "%.1f" % (100.0 * x / fuel)) if fuel > 0 else (lambda x: "")
-    rows = [("fuel chemical energy (LHV 42.7 MJ/kg)", "fuel_chemical"),
+    rows = [("fuel chemical energy (LHV %.1f MJ/kg)" % (DIESEL_LHV_J_KG / 1e6), "fuel_chemical"),
             ("engine heat to coolant", "engine_heat_to_coolant"),
             ("engine exhaust and other losses", "engine_exhaust_and_other"),
             ("engine brake work, net", "engine_net"),

@@ -11,8 +11,8 @@ The participants' warnings (summary key `warnings`) and step compute times (repo
 from diagnostics.bag beside the bag (scripts/diagnostics.py); without it the report says so.
 Exit status: 0 if the run completed, 1 if it was aborted (the message names the failing node).
 
-Fuel: diesel, density 0.835 kg/L at 15 degC (EN 590 allows 0.820-0.845; VECTO's reference fuel
-B7 has 0.836 kg/L), lower heating value 42.7 MJ/kg (VECTO declaration value for diesel B7).
+Fuel: diesel, density and lower heating value as src/common/units.hpp defines them (with their
+sources; read by twin_units.py).
 """
 import argparse
 import json
@@ -27,8 +27,8 @@ import diagnostics  # noqa: E402
 import ledger  # noqa: E402
 import thermal  # noqa: E402
 import hybrid  # noqa: E402
+from twin_units import DIESEL_DENSITY_KG_L  # noqa: E402
 
-DIESEL_DENSITY_KG_L = 0.835
 J_PER_KWH = 3.6e6
 
 

@@ -24,8 +24,8 @@ from geometry_msgs.msg import Point
 from visualization_msgs.msg import Marker
 
 import viz_markers as vm
+from twin_units import DIESEL_LHV_J_KG
 
-LHV_J_KG = 42.7e6   # diesel lower heating value (as scripts/postprocess.py)
 K0 = 273.15
 BUS = (0.15, 0.45, 0.95)       # bus body (the pixel test looks for this blue)
 GREEN = (0.25, 0.85, 0.35)     # speed
@@ -184,7 +184,7 @@ def draw_flows(sc, st, p_wheel_w, p_brake_w):
     vm.box(sc, "flows", 48.0, zw, 7.0, 3.0, (0.2, 0.2, 0.2), "wheels")
     vm.box(sc, "flows", 65.0, zw, 7.0, 3.0, DIM_RED, "brakes")
     if e is not None:
-        vm.flow(sc, "flows", (17.8, zt), (26.2, zt), e.fuel_mass_flow_kg_s * LHV_J_KG, ORANGE)
+        vm.flow(sc, "flows", (17.8, zt), (26.2, zt), e.fuel_mass_flow_kg_s * DIESEL_LHV_J_KG, ORANGE)
         vm.flow(sc, "flows", (33.8, zt - 0.5), (44.2, zw + 1.0), e.brake_torque_nm * e.engine_speed_rad_s,
                 ORANGE, label_dx=0.0, label_dz=2.2)
     vm.flow(sc, "flows", (51.8, zw), (61.2, zw), p_brake_w, RED)

@@ -18,6 +18,14 @@ constexpr double kGravity_m_s2 = 9.81;  // VECTO uses 9.81 m/s^2
 // Standard atmosphere at sea level [Pa] (ISO 2533:1975 / ICAO; = 1 atm): the ambient pressure
 // wherever a scenario or an input gives none (the engine's reset and its command fallback).
 constexpr double kStandardAtmosphere_Pa = 101325.0;
+// Diesel fuel, the one definition for the models, the tools and the Python scripts
+// (scripts/twin_units.py reads these lines: keep each as `constexpr double NAME = NUMBER;`).
+// Lower heating value (net calorific value): the VECTO declaration value for diesel B7.
+constexpr double kDieselLhv_J_kg = 42.7e6;
+// Density at 15 degC: EN 590 allows 0.820-0.845 kg/L (VECTO's reference fuel B7 has 0.836 kg/L);
+// 0.835 kg/L used.
+constexpr double kDieselDensity_kg_m3 = 835.0;
+constexpr double kM3_per_litre = 1e-3;
 
 constexpr double rpmToRadps(double rpm) { return rpm * kRadps_per_rpm; }
 constexpr double radpsToRpm(double w_rad_s) { return w_rad_s / kRadps_per_rpm; }
@@ -27,5 +35,8 @@ constexpr double kmhToMps(double v_kmh) { return v_kmh / kKmh_per_mps; }
 constexpr double mpsToKmh(double v_m_s) { return v_m_s * kKmh_per_mps; }
 constexpr double celsiusToK(double t_c) { return t_c + kZeroCelsius_K; }
 constexpr double kToCelsius(double t_k) { return t_k - kZeroCelsius_K; }
+constexpr double dieselLitres(double fuel_kg) {
+  return fuel_kg / (kDieselDensity_kg_m3 * kM3_per_litre);  // [L]
+}
 
 }  // namespace hbt::units

@@ -167,7 +167,7 @@ void EmsModel::ecms(const EmsInputs& in, bool warm, double dt) {
 
   auto cost = [&](double Tem) {
     const double P_el = Tem >= 0.0 ? Tem * w / e.em_motor_efficiency : Tem * w * e.em_generator_efficiency;
-    return fuel_.fuelRate_kg_s(w, Td - Tem) * p_.fuel_lhv_J_kg + s * P_el;
+    return fuel_.fuelRate_kg_s(w, Td - Tem) * units::kDieselLhv_J_kg + s * P_el;
   };
   double best_T = std::clamp(0.0, lo, hi), best_J = cost(best_T);
   const int n = std::max(3, e.candidates);

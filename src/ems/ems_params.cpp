@@ -36,7 +36,6 @@ void EmsParams::declare(ParamSet& ps) {
   ps.add("max_crank_time_s", stop_start.max_crank_time_s, "s", 0.1, 30.0, "longest allowed start");
   ps.add("min_discharge_power_W", stop_start.min_discharge_power_W, "W", 0.0, 1e5, "battery power needed to stop");
   ps.setPrefix("");
-  ps.add("fuel_lhv_J_kg", fuel_lhv_J_kg, "J/kg", 3e7, 5e7, "fuel lower heating value");
 }
 
 void EmsParams::validate(const std::string& file) const {

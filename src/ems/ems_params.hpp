@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/params.hpp"
+#include "common/units.hpp"
 
 namespace hbt::ems {
 
@@ -53,7 +54,6 @@ struct EmsParams {
   WarmupParams warmup;
   BatteryLimitParams battery;
   StopStartParams stop_start;
-  double fuel_lhv_J_kg = 42.7e6;        // [J/kg] VECTO diesel (as the ledger)
   void declare(ParamSet& ps);
   void validate(const std::string& file) const;
 };

@@ -57,7 +57,7 @@ GasPathState computeGasPath(const GasPathParams& p, double w, double torque_Nm,
   s.lambda = fuel_kg_s > 0.0 ? s.air_mass_flow_kg_s / (afr * fuel_kg_s) : 1e9;
   s.comp = leanProducts(s.lambda, p.fuel_h_to_c_molar);
 
-  s.fuel_power_W = fuel_kg_s * p.fuel_lhv_J_kg;
+  s.fuel_power_W = fuel_kg_s * units::kDieselLhv_J_kg;
   s.brake_power_W = torque_Nm * w;
   const double x = std::clamp(load_fraction, 0.0, 1.0);
   const double fcool =

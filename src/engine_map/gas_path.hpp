@@ -15,7 +15,8 @@
 //   λ    = ṁ_a / (AFR_st ṁ_f)
 //
 // Energy balance over the control volume air-filter inlet -> turbine outlet, enthalpies
-// relative to ambient temperature, fuel at ambient (LHV = lower heating value) [W]:
+// relative to ambient temperature, fuel at ambient (LHV = lower heating value of diesel,
+// units::kDieselLhv_J_kg: the one definition the ledger and the EMS use too) [W]:
 //   ṁ_f LHV = P_b + Q_cool + Q_misc + Q_ic + ṁ_exh c_p,exh (T_exh - T_amb)
 //   P_b    = T_b ω                                      brake power
 //   Q_cool = f_cool(x) ṁ_f LHV + f_mot · max(-P_b, 0)    coolant (f_cool linear in load
@@ -26,6 +27,7 @@
 // which gives the turbine-outlet (aftertreatment-inlet) temperature T_exh.
 // Engine-out NOx: emission-index estimate ṁ_NOx = EI_NOx · ṁ_f (as NO2 mass).
 #pragma once
+#include "common/units.hpp"
 
 namespace hbt::engine_map {
 
@@ -45,7 +47,6 @@ struct GasPathParams {
   double air_gamma = 1.4;                      // γ [-]
   double air_R_J_kgK = 287.05;                 // R [J/(kg K)]
   double fuel_h_to_c_molar = 1.86;             // y [-] (EN 590 diesel ≈ 1.8-1.9)
-  double fuel_lhv_J_kg = 42.7e6;               // LHV [J/kg] (VECTO diesel NCV)
   double nox_emission_index_kg_per_kg = 0.024; // EI_NOx [kg NO2 / kg fuel]
 };
 

@@ -47,7 +47,6 @@ void MapEngineParams::declare(ParamSet& ps) {
   ps.add("air_gamma", g.air_gamma, "-", 1.2, 1.45, "air ratio of specific heats");
   ps.add("air_R_J_kgK", g.air_R_J_kgK, "J/(kg K)", 280.0, 295.0, "air gas constant");
   ps.add("fuel_h_to_c_molar", g.fuel_h_to_c_molar, "-", 1.5, 2.2, "H/C molar ratio of the diesel");
-  ps.add("fuel_lhv_J_kg", g.fuel_lhv_J_kg, "J/kg", 4.0e7, 4.5e7, "lower heating value");
   ps.add("friction_share_of_motoring", friction_share_of_motoring, "-", 0.0, 1.0,
          "share of the motoring torque that is mechanical friction (cold-oil correction)");
   ps.add("oil_minus_coolant_K", oil_minus_coolant_K, "K", -20.0, 40.0, "oil minus coolant temperature");
@@ -93,7 +92,6 @@ MapEngine::MapEngine(const MapEngineParams& p, const std::string& base_dir) : p_
   const auto checkPositive = [](double v, const char* key) {
     if (!(v > 0.0)) throw InputError("(engine parameters)", key, "must be > 0");
   };
-  checkPositive(p.gas.fuel_lhv_J_kg, "fuel_lhv_J_kg");
   checkPositive(p.gas.displacement_m3, "displacement_m3");
   reset(w_min_);
 }

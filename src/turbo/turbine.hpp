@@ -82,7 +82,7 @@ class TwinEntryTurbine {
   /// Builds both entries (share 0.5 each) from the full-turbine map.
   TwinEntryTurbine(const TurbineMap& full_map, Wastegate wastegate)
       : e_{TurbineEntry(full_map, 0.5), TurbineEntry(full_map, 0.5)}, wg_(wastegate) {}
-  /// Entry 0 = cylinders 1–3 (with wastegate), entry 1 = cylinders 4–6.
+  /// Entry 0 (with wastegate) and entry 1: the exhaust banks of config/engine_1d.yaml exhaust_bank (1 and 2; the shipped six: cylinders 1–3 and 4–6).
   const TurbineEntry& entry(int i) const { return e_[i == 0 ? 0 : 1]; }
   const Wastegate& wastegate() const { return wg_; }
   TwinEntryState evaluate(double p_in1_Pa, double T_in1_K, double p_in2_Pa, double T_in2_K,

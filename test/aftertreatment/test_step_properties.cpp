@@ -1,26 +1,13 @@
 // Properties of the step loop: no heap allocation, bitwise deterministic.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
-#include <new>
 
+#include "../common/alloc_counter.hpp"
 #include "aftertreatment/aftertreatment.hpp"
 #include "support.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// Counting replacement of the global allocation functions (this test binary only).
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+using hbt::testing::allocations;
 
 namespace hbt::aftertreatment {
 namespace {
@@ -39,15 +26,15 @@ AtsInputs inputs(int k) {
 
 TEST(AftertreatmentStep, DoesNotAllocate) {
   const AtsParams p = test::loadParams();
-  const long c0 = g_allocations.load();
+  const long c0 = allocations();
   Aftertreatment ats(p);
-  EXPECT_GT(g_allocations.load(), c0);  // the counter works: construction allocates
+  EXPECT_GT(allocations(), c0);  // the counter works: construction allocates
   ats.reset(283.15);
   for (int k = 0; k < 2000; ++k) ats.step(0.1, inputs(k));  // warm: dosing and SCR active
   ASSERT_GT(ats.nitrogen().nh3_dosed_mol, 0.0);
-  const long before = g_allocations.load();
+  const long before = allocations();
   for (int k = 2000; k < 3000; ++k) ats.step(0.1, inputs(k));
-  EXPECT_EQ(g_allocations.load(), before);
+  EXPECT_EQ(allocations(), before);
 }
 
 TEST(AftertreatmentStep, IsDeterministic) {

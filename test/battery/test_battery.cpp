@@ -3,34 +3,22 @@
 // power limit (cut-off voltage vs matched load), energy bookkeeping, derating, bad input.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <functional>
-#include <new>
 #include <string>
 
 #include "battery/battery_model.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "common/yaml_params.hpp"
+#include "../common/alloc_counter.hpp"
 #include "../common/param_checks.hpp"
-
-// Counting allocator (StepDoesNotAllocate).
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-static std::atomic<long> g_allocs{0};
-void* operator new(std::size_t n) {
-  ++g_allocs;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace hbt;
 using namespace hbt::battery;
+using hbt::testing::expectInputError;
 using units::celsiusToK;
 
 namespace {
@@ -499,13 +487,7 @@ TEST(BatteryParams, YamlMatchesDeclarationAndBadValuesRejected) {
   expectKey(bad, "pack/cells_in_series");
 
   auto expectModelKey = [&](const BatteryParams& q, const std::string& file, const std::string& key) {
-    try {
-      BatteryModel m(q, "battery.yaml");
-      FAIL() << "no InputError for " << key;
-    } catch (const InputError& e) {
-      EXPECT_EQ(e.file(), file) << e.what();
-      EXPECT_EQ(e.key(), key) << e.what();
-    }
+    expectInputError([&] { BatteryModel m(q, "battery.yaml"); }, file, key);
   };
   const BatteryParams y = yamlParams();
   BatteryParams q = y;
@@ -540,12 +522,7 @@ TEST(BatteryParams, YamlMatchesDeclarationAndBadValuesRejected) {
   q.cell.table_file = writeTable("bad_dup.csv", ok, "0.5,250,3.75,0.01,0.005,30\n");  // wrong row count
   expectModelKey(q, q.cell.table_file, "SOC");
   q.cell.table_file = writeTable("bad_nan.csv", ok, "0.25,250,nan,0.01,0.005,30\n");
-  try {
-    BatteryModel m(q);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), q.cell.table_file);
-  }
+  expectInputError([&] { BatteryModel m(q); }, q.cell.table_file, "OCV");
 }
 
 TEST(BatteryModel, StepDoesNotAllocate) {
@@ -553,12 +530,12 @@ TEST(BatteryModel, StepDoesNotAllocate) {
   BatteryModel m(p, "config/battery.yaml");
   BatteryInputs in;
   in.air_T_K = celsiusToK(25.0);
-  const long a0 = g_allocs;
+  const long a0 = hbt::testing::allocations();
   for (int k = 0; k < 1000; ++k) {
     in.power_request_W = 40e3 * std::sin(0.01 * k);  // within and beyond the limits
     m.step(0.01, in);
   }
-  EXPECT_EQ(g_allocs - a0, 0);
+  EXPECT_EQ(hbt::testing::allocations() - a0, 0);
 }
 
 TEST(BatteryModel, Deterministic) {

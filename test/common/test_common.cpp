@@ -1,6 +1,8 @@
 // Tests of the shared helpers: CSV reader errors name file and key; Table1D interpolation is
 // exact on linear data; PID anti-windup keeps the integral bounded under saturation; the angle
-// conversions of common/units.hpp have the bits of the M_PI expressions they replaced.
+// conversions of common/units.hpp have the bits of the M_PI expressions they replaced; the tests'
+// own InputError check (test/common/input_errors.hpp) fails on a wrong file or key or no error.
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +14,10 @@
 #include "common/pid.hpp"
 #include "common/table1d.hpp"
 #include "common/units.hpp"
+#include "input_errors.hpp"
+
+using hbt::testing::expectInputError;
+using hbt::testing::KeyMatch;
 
 namespace {
 
@@ -21,7 +27,19 @@ std::string writeTemp(const std::string& name, const std::string& text) {
   return path;
 }
 
+void throwsXYZ() { throw hbt::InputError("a.yaml", "x/y_z", "bad"); }
+void returns() {}
+
 }  // namespace
+
+TEST(TestSupport, ExpectInputErrorChecksFileKeyAndThatItThrows) {
+  EXPECT_EQ(expectInputError(throwsXYZ, "a.yaml", "x/y_z"), "a.yaml: key 'x/y_z': bad");
+  EXPECT_EQ(expectInputError(throwsXYZ, "a.yaml", "y_", KeyMatch::kContains), "a.yaml: key 'x/y_z': bad");
+  EXPECT_NONFATAL_FAILURE(expectInputError(throwsXYZ, "b.yaml", "x/y_z"), "b.yaml");
+  EXPECT_NONFATAL_FAILURE(expectInputError(throwsXYZ, "a.yaml", "x/y"), "x/y");
+  EXPECT_NONFATAL_FAILURE(expectInputError(throwsXYZ, "a.yaml", "q", KeyMatch::kContains), "does not contain");
+  EXPECT_NONFATAL_FAILURE(expectInputError(returns, "a.yaml", "x/y_z"), "no InputError");
+}
 
 TEST(CsvTable, ReadsVectoHeaderAndComments) {
   const auto p = writeTemp("ok.csv", "# comment\n<s>,<v> [km/h],<grad>\n0,0,1.5\n10,20,-2\n");
@@ -32,23 +50,15 @@ TEST(CsvTable, ReadsVectoHeaderAndComments) {
 }
 
 TEST(CsvTable, MissingFileNamesFile) {
-  try {
-    hbt::CsvTable::read("/nonexistent/cycle.vdri");
-    FAIL();
-  } catch (const hbt::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/cycle.vdri"), std::string::npos);
-  }
+  const std::string msg = expectInputError([] { hbt::CsvTable::read("/nonexistent/cycle.vdri"); },
+                                           "/nonexistent/cycle.vdri", "(file)");
+  EXPECT_NE(msg.find("/nonexistent/cycle.vdri"), std::string::npos) << msg;
 }
 
 TEST(CsvTable, NanCellNamesColumnAndLine) {
   const auto p = writeTemp("nan.csv", "<s>,<v>\n0,1\n5,nan\n");
-  try {
-    hbt::CsvTable::read(p);
-    FAIL();
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "v");
-    EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos);
-  }
+  const std::string msg = expectInputError([&] { hbt::CsvTable::read(p); }, p, "v");
+  EXPECT_NE(msg.find("line 3"), std::string::npos) << msg;
 }
 
 TEST(CsvTable, TruncatedRowIsRejected) {
@@ -59,12 +69,7 @@ TEST(CsvTable, TruncatedRowIsRejected) {
 TEST(CsvTable, MissingColumnNamesKey) {
   const auto p = writeTemp("col.csv", "a,b\n1,2\n");
   const auto t = hbt::CsvTable::read(p);
-  try {
-    t.column("stop");
-    FAIL();
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "stop");
-  }
+  expectInputError([&] { t.column("stop"); }, p, "stop");
 }
 
 // The models' former local constants (M_PI / 180.0, 180.0 / M_PI): replaced by these, every
@@ -122,23 +127,12 @@ TEST(Params, AppliesValuesAndNamesBadKeys) {
   EXPECT_DOUBLE_EQ(mass_kg, 16000.0);
 
   src.set("mass_kg", -5.0);  // negative mass
-  try {
-    hbt::applyParams(ps, src);
-    FAIL();
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "mass_kg");
-    EXPECT_EQ(e.file(), "config/vehicle.yaml");
-  }
+  expectInputError([&] { hbt::applyParams(ps, src); }, "config/vehicle.yaml", "mass_kg");
   src.set("mass_kg", std::nan(""));
   EXPECT_THROW(hbt::applyParams(ps, src), hbt::InputError);
   src.set("mass_kg", 16000.0);
   src.set("mas_kg", 1.0);  // typo -> unknown key
-  try {
-    hbt::applyParams(ps, src);
-    FAIL();
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "mas_kg");
-  }
+  expectInputError([&] { hbt::applyParams(ps, src); }, "config/vehicle.yaml", "mas_kg");
   EXPECT_NO_THROW(hbt::applyParams(ps, src, {"mas_"}));
 }
 
@@ -194,13 +188,7 @@ TEST(YamlParams, FlattensNestedKeysAndNamesBadInput) {
   EXPECT_EQ(std::get<std::string>(src.values.at("vehicle/name")), "bus");
   EXPECT_TRUE(std::get<bool>(src.values.at("vehicle/on")));
   EXPECT_EQ(std::get<std::vector<double>>(src.values.at("ratios")).size(), 3u);
-  try {
-    hbt::parseYamlParams("ratios: [1, x]\n", "bad.yaml");
-    FAIL();
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "ratios");
-    EXPECT_EQ(e.file(), "bad.yaml");
-  }
+  expectInputError([] { hbt::parseYamlParams("ratios: [1, x]\n", "bad.yaml"); }, "bad.yaml", "ratios");
   EXPECT_THROW(hbt::parseYamlParams("a: [1, 2\n", "syntax.yaml"), hbt::InputError);
   EXPECT_THROW(hbt::readYamlParams("/nonexistent.yaml"), hbt::InputError);
 }

@@ -15,6 +15,7 @@ using namespace hbt;
 using namespace hbt::cooling;
 using units::celsiusToK;
 using units::rpmToRadps;
+using hbt::testing::expectInputError;
 
 namespace {
 
@@ -411,21 +412,10 @@ TEST(CoolingParams, YamlMatchesDeclarationAndBadValuesRejected) {
 
   CoolingParams q = p;
   q.thermostat.full_open_K = q.thermostat.opening_start_K - 1.0;
-  try {
-    CoolingModel m(q, "cooling.yaml");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), "cooling.yaml");
-    EXPECT_EQ(e.key(), "thermostat/full_open_K");
-  }
+  expectInputError([&] { CoolingModel m(q, "cooling.yaml"); }, "cooling.yaml", "thermostat/full_open_K");
   CoolingParams r = p;
   r.radiator.rated_heat_W = 5e5;  // would need ε > 1
-  try {
-    CoolingModel m(r, "cooling.yaml");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.key(), "radiator/rated_heat_W");
-  }
+  expectInputError([&] { CoolingModel m(r, "cooling.yaml"); }, "cooling.yaml", "radiator/rated_heat_W");
 }
 
 TEST(CoolingModel, BadStepInputAndDivergenceNamed) {
@@ -435,12 +425,7 @@ TEST(CoolingModel, BadStepInputAndDivergenceNamed) {
   CoolingInputs in;
   in.ambient_T_K = celsiusToK(25.0);
   in.engine_heat_W = std::nan("");
-  try {
-    m.step(0.01, in);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.key(), "engine_heat_W");
-  }
+  expectInputError([&] { m.step(0.01, in); }, "cooling step input", "engine_heat_W");
   in.engine_heat_W = 1e9;  // absurd heat: the metal leaves the physical range
   try {
     for (int k = 0; k < 1000; ++k) m.step(0.01, in);

@@ -11,6 +11,7 @@
 #include "common/units.hpp"
 #include "cylinder/rig.hpp"
 #include "support.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt::cylinder;
 
@@ -134,13 +135,8 @@ TEST(Rig, HohenbergCorrelationClosesEnergyWithPlausibleWallHeat) {
 TEST(Params, UnknownHeatTransferCorrelationNamesFileAndKey) {
   CylinderParams cp = test::loadParams();
   cp.heat_transfer_correlation = "annand";
-  try {
-    cp.finalize("cyl.yaml");
-    FAIL() << "expected InputError";
-  } catch (const hbt::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("cyl.yaml"), std::string::npos);
-    EXPECT_NE(std::string(e.what()).find("cylinder/heat_transfer/correlation"), std::string::npos);
-  }
+  hbt::testing::expectInputError([&] { cp.finalize("cyl.yaml"); }, "cyl.yaml",
+                                 "cylinder/heat_transfer/correlation");
 }
 
 TEST(Rig, FlameConsumingTheWholeUnburnedZoneKeepsEnergyBalance) {

@@ -6,6 +6,7 @@
 #include "common/errors.hpp"
 #include "cylinder/thermo.hpp"
 #include "support.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt::cylinder;
 
@@ -88,19 +89,8 @@ TEST(Params, ConfigFileLoadsAndBadKeysAreNamed) {
   CylinderParams c2;
   hbt::ParamSet ps;
   c2.declare(ps);
-  try {
-    hbt::applyParams(ps, src);
-    FAIL();
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.file(), "x.yaml");
-    EXPECT_EQ(e.key(), "cylinder/geometry/bore_mm");
-  }
+  hbt::testing::expectInputError([&] { hbt::applyParams(ps, src); }, "x.yaml", "cylinder/geometry/bore_mm");
   src = hbt::parseYamlParams("cylinder:\n  injection:\n    soi_main_deg: [1, 2,\n      3]\n", "y.yaml");
   hbt::applyParams(ps, src);
-  try {
-    c2.finalize("y.yaml");
-    FAIL();
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "cylinder/injection/soi_main_deg");
-  }
+  hbt::testing::expectInputError([&] { c2.finalize("y.yaml"); }, "y.yaml", "cylinder/injection/soi_main_deg");
 }

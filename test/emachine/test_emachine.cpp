@@ -6,6 +6,7 @@
 using namespace hbt;
 using namespace hbt::emachine;
 using namespace hbt::emachine::test;
+using hbt::testing::expectInputError;
 
 TEST(EMachineEnvelope, VempPointsAtTheCrankAreExactlyTheData) {
   const EMachineParams p = yamlParams();
@@ -295,12 +296,7 @@ TEST(EMachineParams, YamlMatchesDeclarationAndBadValuesRejected) {
   expectKey(bad, "data/vemp_file");
 
   auto expectModelKey = [&](const EMachineParams& q, const std::string& key) {
-    try {
-      EMachineModel mm(q, "emachine.yaml");
-      FAIL() << key;
-    } catch (const InputError& e) {
-      EXPECT_EQ(e.key(), key) << e.what();
-    }
+    expectInputError([&] { EMachineModel mm(q, "emachine.yaml"); }, "emachine.yaml", key);
   };
   EMachineParams q = p;
   q.derating.winding_continuous_K = q.derating.winding_start_K;
@@ -313,25 +309,18 @@ TEST(EMachineParams, YamlMatchesDeclarationAndBadValuesRejected) {
   expectModelKey(q, "envelope/undervoltage_full_V");
   q = p;
   q.data.vemp_file = "config/data/no_such_file.vemp";
-  try {
-    EMachineModel mm(q, "emachine.yaml");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("no_such_file"), std::string::npos) << e.what();
-  }
+  expectInputError([&] { EMachineModel mm(q, "emachine.yaml"); }, q.data.vemp_file, "(file)");
   // Same speed twice with different torques in a curve = InputError naming the column.
-  try {
-    TorqueEnvelope env({0.0, 10.0, 10.0}, {220.0, 220.0, 200.0}, {-440.0, -440.0, -440.0}, "bad.vemp", 48,
-                       52, 24, 36, 15e3, 220);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), "bad.vemp");
-    EXPECT_EQ(e.key(), "n");
-  }
-  try {
-    TorqueEnvelope env({0.0, 10.0}, {220.0, -1.0}, {-440.0, -440.0}, "bad.vemp", 48, 52, 24, 36, 15e3, 220);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.key(), "T_drive");
-  }
+  expectInputError(
+      [] {
+        TorqueEnvelope env({0.0, 10.0, 10.0}, {220.0, 220.0, 200.0}, {-440.0, -440.0, -440.0}, "bad.vemp",
+                           48, 52, 24, 36, 15e3, 220);
+      },
+      "bad.vemp", "n");
+  expectInputError(
+      [] {
+        TorqueEnvelope env({0.0, 10.0}, {220.0, -1.0}, {-440.0, -440.0}, "bad.vemp", 48, 52, 24, 36, 15e3,
+                           220);
+      },
+      "bad.vemp", "T_drive");
 }

@@ -1,27 +1,14 @@
 // Properties of the e-machine step loop: no heap allocation, bitwise deterministic.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
-#include <new>
 
+#include "../common/alloc_counter.hpp"
 #include "common/units.hpp"
 #include "common/yaml_params.hpp"
 #include "emachine/emachine_model.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// Counting replacement of the global allocation functions (this test binary only).
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+using hbt::testing::allocations;
 
 namespace hbt::emachine {
 namespace {
@@ -45,14 +32,14 @@ EMachineInputs inputs(int k) {
 
 TEST(EMachineStep, DoesNotAllocate) {
   const EMachineParams p = params();
-  const long c0 = g_allocations.load();
+  const long c0 = allocations();
   EMachineModel m(p, "config/emachine.yaml");
-  EXPECT_GT(g_allocations.load(), c0);  // the counter works: construction allocates
+  EXPECT_GT(allocations(), c0);  // the counter works: construction allocates
   m.reset(300.0);
   for (int k = 0; k < 1000; ++k) m.step(0.01, inputs(k));
-  const long before = g_allocations.load();
+  const long before = allocations();
   for (int k = 1000; k < 20000; ++k) m.step(0.01, inputs(k));
-  EXPECT_EQ(g_allocations.load(), before);
+  EXPECT_EQ(allocations(), before);
 }
 
 TEST(EMachineStep, IsDeterministic) {

@@ -16,6 +16,7 @@
 #include "common/yaml_params.hpp"
 #include "engine_1d/engine_1d_model.hpp"
 #include "engine_map/map_engine_model.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt;
 
@@ -43,14 +44,11 @@ TEST(EngineModel, ModelNamesAreCheckedNamingTheKey) {
   EXPECT_NO_THROW(engine::checkEngineModelName("map", "engine", "model"));
   EXPECT_NO_THROW(engine::checkEngineModelName("1d", "engine", "model"));
   for (const char* bad : {"1D", "", "map ", "tvd"}) {
-    try {
-      engine::checkEngineModelName(bad, "/engine (private parameters)", "model");
-      FAIL() << bad;
-    } catch (const InputError& e) {
-      EXPECT_EQ(e.key(), "model");
-      EXPECT_EQ(e.file(), "/engine (private parameters)");
-      EXPECT_NE(std::string(e.what()).find("map | 1d"), std::string::npos);
-    }
+    SCOPED_TRACE(bad);
+    const std::string msg = hbt::testing::expectInputError(
+        [&] { engine::checkEngineModelName(bad, "/engine (private parameters)", "model"); },
+        "/engine (private parameters)", "model");
+    EXPECT_NE(msg.find("map | 1d"), std::string::npos) << msg;
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "support.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt::engine_1d;
 using namespace hbt::engine_1d::test;
@@ -39,32 +40,14 @@ std::string writeVariant(const std::string& from, const std::string& to, const s
 
 TEST(Engine1DErrors, OutOfRangeValueNamesFileAndKey) {
   const std::string f = writeVariant("plenum_m3: 4.0e-3", "plenum_m3: -1.0", "range");
-  try {
-    Engine1DParams::load(repoRoot(), f);
-    FAIL() << "no InputError";
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.file(), f);
-    EXPECT_EQ(e.key(), "engine_1d/intake/plenum_m3");
-  }
+  hbt::testing::expectInputError([&] { Engine1DParams::load(repoRoot(), f); }, f, "engine_1d/intake/plenum_m3");
 }
 
 TEST(Engine1DErrors, UnknownKeyAndBadSolverAreRejected) {
   const std::string f = writeVariant("  firing_order:", "  tvd_mesh_factr: 3\n  firing_order:", "typo");
-  try {
-    Engine1DParams::load(repoRoot(), f);
-    FAIL() << "no InputError";
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.file(), f);
-    EXPECT_NE(std::string(e.what()).find("tvd_mesh_factr"), std::string::npos) << e.what();
-  }
+  hbt::testing::expectInputError([&] { Engine1DParams::load(repoRoot(), f); }, f, "engine_1d/tvd_mesh_factr");
   const std::string g = writeVariant("solver: fsm", "solver: lax", "solver");
-  try {
-    Engine1DParams::load(repoRoot(), g);
-    FAIL() << "no InputError";
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.file(), g);
-    EXPECT_EQ(e.key(), "engine_1d/solver");
-  }
+  hbt::testing::expectInputError([&] { Engine1DParams::load(repoRoot(), g); }, g, "engine_1d/solver");
   const std::string h = writeVariant("cd_normal: [0.72, 0.70, 0.67", "cd_normal: [0.70, 0.67", "cd");
   EXPECT_THROW(Engine1DParams::load(repoRoot(), h), hbt::InputError);
 }
@@ -90,25 +73,14 @@ TEST(Engine1DErrors, CylinderCountFiringOrderAndBanksAreCheckedAtLoad) {
   };
   for (const Case& c : cases) {
     const std::string f = writeVariant(c.from, c.to, c.name);
-    try {
-      Engine1DParams::load(repoRoot(), f);
-      ADD_FAILURE() << "no InputError for " << c.to;
-    } catch (const hbt::InputError& e) {
-      EXPECT_EQ(e.file(), f) << c.to;
-      EXPECT_EQ(e.key(), c.key) << c.to << ": " << e.what();
-      EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
-    }
+    SCOPED_TRACE(c.to);
+    const std::string m = hbt::testing::expectInputError([&] { Engine1DParams::load(repoRoot(), f); }, f, c.key);
+    EXPECT_NE(m.find(c.says), std::string::npos) << m;
   }
   // parameters filled in code are checked by the engine before it builds anything
   Engine1DParams p = defaultParams();
   p.engine.cylinders = 4;
-  try {
-    Engine1D e(p, repoRoot());
-    ADD_FAILURE() << "no InputError";
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.file(), p.engine_source);
-    EXPECT_EQ(e.key(), "engine_1d/firing_order");
-  }
+  hbt::testing::expectInputError([&] { Engine1D e(p, repoRoot()); }, p.engine_source, "engine_1d/firing_order");
 }
 
 TEST(Engine1DErrors, SubFilesAreReadBesideTheEngineFile) {
@@ -116,13 +88,7 @@ TEST(Engine1DErrors, SubFilesAreReadBesideTheEngineFile) {
   // broken value there is reported with the copy's path, never replaced by the package's file
   const std::string f = writeVariant("bore_m: 0.104", "bore_m: -0.104", "subfile", "engine_1d_cylinder.yaml");
   const std::string cyl = f.substr(0, f.find_last_of('/')) + "/engine_1d_cylinder.yaml";
-  try {
-    Engine1DParams::load(repoRoot(), f);
-    FAIL() << "no InputError";
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.file(), cyl);
-    EXPECT_EQ(e.key(), "cylinder/geometry/bore_m");
-  }
+  hbt::testing::expectInputError([&] { Engine1DParams::load(repoRoot(), f); }, cyl, "cylinder/geometry/bore_m");
   // and an intact copy loads to exactly the package's parameters
   const std::string g = writeVariant("bore_m: 0.104", "bore_m: 0.104", "subfile_same", "engine_1d_cylinder.yaml");
   EXPECT_EQ(Engine1DParams::load(repoRoot(), g).cylinder.geometry.bore_m, defaultParams().cylinder.geometry.bore_m);

@@ -12,9 +12,11 @@
 #include "common/units.hpp"
 #include "engine_map/map_engine.hpp"
 #include "common/yaml_params.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt;
 using namespace hbt::engine_map;
+using hbt::testing::expectInputError;
 
 namespace {
 
@@ -222,7 +224,7 @@ TEST(MapEngine, CumulativeFuelAndWork) {
   const auto& o = e.outputs();
   EXPECT_NEAR(o.fuel_mass_kg, 10.0 * e.steadyFuel(w, 600.0), 1e-12);
   EXPECT_NEAR(o.brake_work_J, 10.0 * 600.0 * w, 1e-6);
-  EXPECT_NEAR(o.fuel_energy_J, o.fuel_mass_kg * 42.7e6, 1e-3);
+  EXPECT_NEAR(o.fuel_energy_J, o.fuel_mass_kg * units::kDieselLhv_J_kg, 1e-3);
   // NOx: the NOx map's emission index at this point x the fuel (steady: exact).
   EXPECT_NEAR(o.nox_mass_kg, e.noxEmissionIndex(w, 600.0) * o.fuel_mass_kg, 1e-12);
   EXPECT_GT(o.nox_mass_kg, 0.0);
@@ -298,23 +300,12 @@ TEST(MapEngine, BadParametersNameFileAndKey) {
   ParamSource src;
   src.file = "engine_map.yaml";
   src.set("displacment_m3", 6.7e-3);  // misspelt
-  try {
-    applyParams(ps, src);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), "engine_map.yaml");
-    EXPECT_EQ(e.key(), "displacment_m3");
-  }
+  expectInputError([&] { applyParams(ps, src); }, "engine_map.yaml", "displacment_m3");
   ParamSource src2;
   src2.file = "engine_map.yaml";
   src2.set("volumetric_efficiency", NAN);
   EXPECT_THROW(applyParams(ps, src2), InputError);
   MapEngineParams bad;
   bad.fuel_map_file = "/nonexistent/map.vmap";
-  try {
-    MapEngine e(bad);
-    FAIL();
-  } catch (const InputError& err) {
-    EXPECT_EQ(err.file(), "/nonexistent/map.vmap");
-  }
+  expectInputError([&] { MapEngine e(bad); }, "/nonexistent/map.vmap", "(file)");
 }

@@ -1,30 +1,13 @@
 // No heap allocation inside a time step: global operator new is replaced by a counting version
-// (this test executable only); a network with every element kind is advanced after a warm-up and
-// the allocation count must not change.
+// (test/common/alloc_counter.hpp, linked into this test executable only); a network with every
+// element kind is advanced after a warm-up and the allocation count must not change.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
 #include <memory>
-#include <new>
 
+#include "../common/alloc_counter.hpp"
 #include "gasdyn/network.hpp"
 #include "gasdyn/turbo_boundaries.hpp"
-
-namespace {
-std::atomic<long> g_allocs{0};
-}
-
-void* operator new(std::size_t n) {
-  ++g_allocs;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace hbt::gasdyn;
 
@@ -64,10 +47,10 @@ TEST(Allocation, NoneDuringStepping) {
     net.add<CompressorOutlet>("compressor", amb, leftEnd(d), std::make_shared<Map>());
     net.close(d, End::Right);
     net.advance(1e-4);  // warm-up (validation etc.)
-    const long before = g_allocs.load();
+    const long before = hbt::testing::allocations();
     ASSERT_GT(before, 0) << "counting operator new not active";
     net.advance(5e-3);
-    EXPECT_EQ(g_allocs.load() - before, 0) << "solver " << (s == SolverKind::FSM ? "fsm" : "tvd");
+    EXPECT_EQ(hbt::testing::allocations() - before, 0) << "solver " << (s == SolverKind::FSM ? "fsm" : "tvd");
     EXPECT_GT(net.steps(), 20);
   }
 }

@@ -14,8 +14,10 @@
 #include "mission/driving_cycle.hpp"
 #include "mission/mission_preprocessor.hpp"
 #include "mission/vehicle_limits.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt::mission;
+using hbt::testing::expectInputError;
 
 namespace {
 
@@ -26,20 +28,6 @@ std::string writeTemp(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + name;
   std::ofstream(path) << text;
   return path;
-}
-
-// Expects InputError naming `file` and `key`; returns the message.
-template <class F>
-std::string expectInputError(F f, const std::string& file, const std::string& key) {
-  try {
-    f();
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.file(), file);
-    EXPECT_EQ(e.key(), key) << e.what();
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
 }
 
 const std::string kHeader = "<s>,<v>,<grad>,<stop>\n";

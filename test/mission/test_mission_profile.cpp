@@ -13,6 +13,7 @@
 #include "common/csv_table.hpp"
 #include "common/errors.hpp"
 #include "mission/mission_preprocessor.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt::mission;
 
@@ -225,12 +226,7 @@ TEST(Urban, CsvRoundTripAndDeterminism) {
 TEST(Mission, BadFilesNameTheFile) {
   MissionParams m;
   m.accel_limits_file = "config/data/vehicle/none.vacc";
-  try {
-    buildMissionProfile(m);
-    FAIL() << "no error";
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.file(), m.accel_limits_file);
-  }
+  hbt::testing::expectInputError([&] { buildMissionProfile(m); }, m.accel_limits_file, "(file)");
   m = MissionParams{};
   m.profile_csv_file = "/nonexistent_dir/p.csv";
   EXPECT_THROW(buildMissionProfile(m), hbt::InputError);

@@ -16,10 +16,11 @@ import unittest
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
+sys.path.insert(0, os.path.join(REPO, "scripts"))
 import run_util  # noqa: E402
+from twin_units import DIESEL_LHV_J_KG  # noqa: E402
 
 LAUNCH = os.path.join(REPO, "launch", "baseline_urban.launch")
-LHV_J_KG = 42.7e6
 
 
 def messages(bag, topic):
@@ -108,7 +109,7 @@ class Engine1DScenario(unittest.TestCase):
         engine_work = e.positive_work_j + e.motoring_work_j
         self.assertGreater(v.engine_work_j, 5e4)
         self.assertAlmostEqual(engine_work / v.engine_work_j, 1.0, delta=0.01)
-        eff = e.positive_work_j / (e.fuel_mass_kg * LHV_J_KG)
+        eff = e.positive_work_j / (e.fuel_mass_kg * DIESEL_LHV_J_KG)
         self.assertGreater(eff, 0.05)
         self.assertLess(eff, 0.46)
 

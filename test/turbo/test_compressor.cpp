@@ -10,6 +10,7 @@
 #include "common/errors.hpp"
 #include "turbo/compressor.hpp"
 #include "turbo_test_util.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt::turbo;
 using hbt::turbo::test::dataPath;
@@ -26,14 +27,9 @@ std::string writeTemp(const std::string& name, const std::string& text) {
   return p;
 }
 
-void expectInputError(const std::string& path, const std::string& key) {
-  try {
-    CompressorMap::read(path);
-    FAIL() << "no error for " << path;
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), key) << e.what();
-    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
-  }
+// Reading the map at `path` is an InputError naming it and `key`.
+void expectBadMapFile(const std::string& path, const std::string& key) {
+  hbt::testing::expectInputError([&] { CompressorMap::read(path); }, path, key);
 }
 
 const char* kHead = "speed [rpm],mass_flow [kg/s],pressure_ratio [-],efficiency [-]\n";
@@ -72,24 +68,24 @@ TEST(CompressorMap, ScaledModelReproducesScaledPoints) {
 }
 
 TEST(CompressorMap, ValidationErrorsNameFileAndColumn) {
-  expectInputError(writeTemp("c_mono.csv", std::string(kHead) +
+  expectBadMapFile(writeTemp("c_mono.csv", std::string(kHead) +
                                                "1000,0.1,1.2,0.7\n1000,0.2,1.3,0.7\n"
                                                "2000,0.2,1.5,0.7\n2000,0.3,1.4,0.7\n"),
                    "pressure_ratio");
-  expectInputError(writeTemp("c_eta.csv", std::string(kHead) +
+  expectBadMapFile(writeTemp("c_eta.csv", std::string(kHead) +
                                               "1000,0.1,1.3,0.7\n1000,0.2,1.2,1.2\n"
                                               "2000,0.2,1.5,0.7\n2000,0.3,1.4,0.7\n"),
                    "efficiency");
-  expectInputError(writeTemp("c_neg.csv", std::string(kHead) +
+  expectBadMapFile(writeTemp("c_neg.csv", std::string(kHead) +
                                               "1000,-0.1,1.3,0.7\n1000,0.2,1.2,0.7\n"
                                               "2000,0.2,1.5,0.7\n2000,0.3,1.4,0.7\n"),
                    "mass_flow");
-  expectInputError(writeTemp("c_split.csv", std::string(kHead) +
+  expectBadMapFile(writeTemp("c_split.csv", std::string(kHead) +
                                                 "1000,0.1,1.3,0.7\n1000,0.2,1.2,0.7\n"
                                                 "2000,0.2,1.5,0.7\n2000,0.3,1.4,0.7\n"
                                                 "1000,0.3,1.1,0.7\n1000,0.4,1.05,0.7\n"),
                    "speed");
-  expectInputError(writeTemp("c_col.csv", "speed,flow,pressure_ratio,efficiency\n1,2,3,0.5\n"),
+  expectBadMapFile(writeTemp("c_col.csv", "speed,flow,pressure_ratio,efficiency\n1,2,3,0.5\n"),
                    "mass_flow");
 }
 

@@ -5,30 +5,18 @@
 
 #include "common/yaml_params.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <map>
-#include <new>
 
+#include "../common/alloc_counter.hpp"
+#include "../common/input_errors.hpp"
 #include "common/csv_table.hpp"
 #include "common/errors.hpp"
 #include "common/params.hpp"
 #include "turbo_test_util.hpp"
-
-// Counting replacement of the global allocator (checks that look-ups never allocate).
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-static std::atomic<long> g_allocs{0};
-void* operator new(std::size_t n) {
-  ++g_allocs;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace hbt::turbo;
 using hbt::turbo::test::dataPath;
@@ -195,33 +183,26 @@ TEST(Config, YamlFileLoadsAndMatchesBuiltInDefaults) {
   // misspelt key, out-of-range value, missing map file: errors name file and key
   auto src = hbt::readYamlParams(path);
   src.set("turbo/shaft/inertia_kgm2", 1e-4);
-  try { hbt::applyParams(ps, src); FAIL(); } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "turbo/shaft/inertia_kgm2");
-    EXPECT_EQ(e.file(), path);
-  }
+  hbt::testing::expectInputError([&] { hbt::applyParams(ps, src); }, path, "turbo/shaft/inertia_kgm2");
   src = hbt::readYamlParams(path);
   src.set("turbo/scaling/lambda", 0.5);
-  try { hbt::applyParams(ps, src); FAIL(); } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "turbo/scaling/lambda");
-  }
+  hbt::testing::expectInputError([&] { hbt::applyParams(ps, src); }, path, "turbo/scaling/lambda");
   TurboConfig bad = cfg;
   bad.turbine_map_file = "nowhere/turbine.csv";
-  try { buildTurbocharger(bad, repoRoot()); FAIL(); } catch (const hbt::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("nowhere/turbine.csv"), std::string::npos);
-  }
+  const std::string msg = hbt::testing::expectInputError([&] { buildTurbocharger(bad, repoRoot()); },
+                                                         dataPath("nowhere/turbine.csv"), "(file)");
+  EXPECT_NE(msg.find("nowhere/turbine.csv"), std::string::npos) << msg;
   TurboConfig pr = cfg;
   pr.scaling.rated_pressure_ratio = 4.49;  // ridge ends at 4.484
-  try { buildTurbocharger(pr, repoRoot()); FAIL(); } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "turbo/scaling/rated_pressure_ratio");
-    EXPECT_EQ(e.file(), path);
-  }
+  hbt::testing::expectInputError([&] { buildTurbocharger(pr, repoRoot()); }, path,
+                                 "turbo/scaling/rated_pressure_ratio");
 }
 
 TEST(Performance, LookupsAreCheapAndDoNotAllocate) {
   const auto& t = defaultTurbo();
   const int n = 200000;
   double sink = 0.0;
-  const long a0 = g_allocs.load();
+  const long a0 = hbt::testing::allocations();
   auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < n; ++i) {
     const double f = (i % 1000) * 1e-3;
@@ -239,7 +220,7 @@ TEST(Performance, LookupsAreCheapAndDoNotAllocate) {
                                12000.0 * f, f).power_W;
   }
   auto t3 = std::chrono::steady_clock::now();
-  EXPECT_EQ(g_allocs.load(), a0);
+  EXPECT_EQ(hbt::testing::allocations(), a0);
   EXPECT_TRUE(std::isfinite(sink));
   const auto ns = [&](auto a, auto b) {
     return std::chrono::duration<double, std::nano>(b - a).count() / n; };

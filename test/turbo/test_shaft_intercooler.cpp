@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "turbo/intercooler.hpp"
 #include "turbo/shaft.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt::turbo;
 
@@ -94,13 +95,8 @@ TEST(Intercooler, PressureDropScalesWithFlowSquaredTemperatureOverPressure) {
 TEST(Intercooler, BadParametersNameFileAndKey) {
   IntercoolerParams p;
   p.effectiveness = {0.9, 0.8};
-  try {
-    Intercooler(p, "engine_1d_turbo.yaml", "turbo/intercooler/");
-    FAIL();
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), "turbo/intercooler/effectiveness");
-    EXPECT_EQ(e.file(), "engine_1d_turbo.yaml");
-  }
+  hbt::testing::expectInputError([&] { Intercooler(p, "engine_1d_turbo.yaml", "turbo/intercooler/"); },
+                                 "engine_1d_turbo.yaml", "turbo/intercooler/effectiveness");
   p = IntercoolerParams{};
   p.effectiveness_flow_kg_s = {0.1, 0.05, 0.3, 0.4};
   EXPECT_THROW(Intercooler(p, "f.yaml"), hbt::InputError);

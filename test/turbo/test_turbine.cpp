@@ -10,6 +10,7 @@
 #include "common/errors.hpp"
 #include "turbo/turbine.hpp"
 #include "turbo_test_util.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt::turbo;
 using hbt::turbo::test::dataPath;
@@ -28,17 +29,12 @@ double psiRef(double er) {
 
 TurbineMap rawMap() { return TurbineMap::read(dataPath(kFile)); }
 
-void expectInputError(const std::string& name, const std::string& body, const std::string& key) {
+// A map file `name` of the rows `body` is an InputError naming the file and `key`.
+void expectBadMapFile(const std::string& name, const std::string& body, const std::string& key) {
   const std::string p = ::testing::TempDir() + name;
   std::ofstream(p) << "reduced_speed,reduced_mass_flow_parameter,expansion_ratio,efficiency\n"
                    << body;
-  try {
-    TurbineMap::read(p);
-    FAIL() << "no error for " << name;
-  } catch (const hbt::InputError& e) {
-    EXPECT_EQ(e.key(), key) << e.what();
-    EXPECT_NE(std::string(e.what()).find(p), std::string::npos);
-  }
+  hbt::testing::expectInputError([&] { TurbineMap::read(p); }, p, key);
 }
 
 }  // namespace
@@ -55,11 +51,11 @@ TEST(TurbineMap, ReproducesMeasuredPointsExactly) {
 }
 
 TEST(TurbineMap, ValidationErrorsNameFileAndColumn) {
-  expectInputError("t_eta.csv", "1000,0.03,1.5,0.7\n1000,0.04,2,1.5\n2000,0.03,1.5,0.7\n"
+  expectBadMapFile("t_eta.csv", "1000,0.03,1.5,0.7\n1000,0.04,2,1.5\n2000,0.03,1.5,0.7\n"
                                 "2000,0.04,2,0.7\n", "efficiency");
-  expectInputError("t_mfp.csv", "1000,0.03,1.5,0.7\n1000,0.02,2,0.7\n2000,0.03,1.5,0.7\n"
+  expectBadMapFile("t_mfp.csv", "1000,0.03,1.5,0.7\n1000,0.02,2,0.7\n2000,0.03,1.5,0.7\n"
                                 "2000,0.04,2,0.7\n", "reduced_mass_flow_parameter");
-  expectInputError("t_er.csv", "1000,0.03,0.9,0.7\n1000,0.04,2,0.7\n2000,0.03,1.5,0.7\n"
+  expectBadMapFile("t_er.csv", "1000,0.03,0.9,0.7\n1000,0.04,2,0.7\n2000,0.03,1.5,0.7\n"
                                "2000,0.04,2,0.7\n", "expansion_ratio");
 }
 

@@ -15,10 +15,12 @@
 #include "vehicle/torque_converter.hpp"
 #include "vehicle/transmission_losses.hpp"
 #include "vehicle/vehicle_model.hpp"
+#include "../common/input_errors.hpp"
 
 using namespace hbt;
 using namespace hbt::vehicle;
 using units::rpmToRadps;
+using hbt::testing::expectInputError;
 
 namespace {
 
@@ -63,13 +65,7 @@ TEST(TorqueConverter, BadFileRejected) {
   const auto p1 = writeTemp("tc1.vtcc", "nu,mu,mp\n0.1,1.8,300\n0.5,1.2,200\n");
   EXPECT_THROW(TorqueConverter(p1, 100.0), InputError);
   const auto p2 = writeTemp("tc2.vtcc", "nu,mu,mp\n0,1.8,300\n0.5,-1,200\n");
-  try {
-    TorqueConverter tc(p2, 100.0);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), p2);
-    EXPECT_EQ(e.key(), "mu");
-  }
+  expectInputError([&] { TorqueConverter tc(p2, 100.0); }, p2, "mu");
   const auto p3 = writeTemp("tc3.vtcc", "nu,mu,mp\n0,1.8,300\n0.5,1.2,nan\n");
   EXPECT_THROW(TorqueConverter(p3, 100.0), InputError);
 }
@@ -143,24 +139,16 @@ TEST(GearLossSet, VectoStandardReproducesRegulationFormula) {
 
 TEST(GearLossSet, UnknownSetNameRejectedNamingTheArgument) {
   for (const std::string bad : {"measured", "", "../vehicle", "typical.yaml"}) {
-    try {
-      gearLossSetFile("config", bad);
-      FAIL() << bad;
-    } catch (const InputError& e) {
-      EXPECT_EQ(e.key(), "gearbox");
-      EXPECT_NE(std::string(e.what()).find("typical, vecto_standard"), std::string::npos) << e.what();
-    }
+    SCOPED_TRACE(bad);
+    const std::string msg = expectInputError([&] { gearLossSetFile("config", bad); }, "config/gearbox", "gearbox");
+    EXPECT_NE(msg.find("typical, vecto_standard"), std::string::npos) << msg;
   }
   EXPECT_EQ(gearLossSetFile("config", "typical"), "config/gearbox/typical.yaml");
   // A set whose factors do not match the gear count is rejected before the run.
   VehicleParams p;
   p.gearbox.gear_load_loss_factor = {1.0, 1.0};
-  try {
-    p.validate("config/gearbox/x.yaml");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.key(), "gearbox/gear_load_loss_factor");
-  }
+  expectInputError([&] { p.validate("config/gearbox/x.yaml"); }, "config/gearbox/x.yaml",
+                   "gearbox/gear_load_loss_factor");
 }
 
 TEST(RoadLoad, VectoRollingResistanceWeighting) {
@@ -266,21 +254,10 @@ TEST(VehicleParams, YamlMatchesDeclarationAndBadValuesRejected) {
   ParamSource bad;
   bad.file = "vehicle.yaml";
   bad.set("chassis/payload", 1500.0);
-  try {
-    applyParams(ps, bad);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), "vehicle.yaml");
-    EXPECT_EQ(e.key(), "chassis/payload");
-  }
+  expectInputError([&] { applyParams(ps, bad); }, "vehicle.yaml", "chassis/payload");
   VehicleParams q;
   q.driveline.gear_ratios = {3.0, 3.5, 1.0, 0.9, 0.8, 0.7};
-  try {
-    q.validate("vehicle.yaml");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.key(), "driveline/gear_ratios");
-  }
+  expectInputError([&] { q.validate("vehicle.yaml"); }, "vehicle.yaml", "driveline/gear_ratios");
   VehicleParams r;
   r.driveline.torque_converter_file = "/nonexistent/tc.vtcc";
   EXPECT_THROW(VehicleModel{r}, InputError);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/units.hpp"
 #include "vehicle/tools/mission_run.hpp"
 
 using namespace hbt;
@@ -25,7 +26,7 @@ TEST(VehicleMission, UrbanStopsRmseDistance) {
   std::printf("Urban: %.1f m, RMSE %.3f km/h, stops %zu/%zu, max stop position error %.2f m, "
               "fuel %.3f kg = %.2f L/100km\n",
               r.distance_m, 3.6 * r.speed_rmse_m_s, r.stops_served, n_stops,
-              r.max_stop_position_error_m, r.fuel_kg, 100.0 * r.fuel_kg / 0.835 / km);
+              r.max_stop_position_error_m, r.fuel_kg, 100.0 * units::dieselLitres(r.fuel_kg) / km);
   EXPECT_EQ(n_stops, 121u);  // the cycle's stops (incl. the start and the final 2 s stop)
   EXPECT_EQ(r.stops_served, n_stops);
   for (const auto& s : r.stops) {

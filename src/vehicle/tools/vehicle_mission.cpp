@@ -1,8 +1,8 @@
 // vehicle_mission: the full VECTO mission (default Urban) in-process — mission profile, bus and
 // map engine in lock-step at the 10 ms exchange like the ROS nodes (tools/mission_run.hpp).
 // Prints distance, speed RMSE, stops served (v = 0 for >= 90 % of the stop time within
-// [t_0, t_0 + D + 2 s]), stop position errors, fuel [kg, L/100 km at 0.835 kg/L] and the
-// vehicle's energy breakdown [kWh]. --stops lists every stop.
+// [t_0, t_0 + D + 2 s]), stop position errors, fuel [kg, L/100 km at the diesel density of
+// common/units.hpp] and the vehicle's energy breakdown [kWh]. --stops lists every stop.
 //
 //   vehicle_mission [--dt 0.01] [--ambient_C 25] [--payload 1500] [--cycle <vdri>]
 //                   [--t_end <s>] [--base <package root>] [--stops 1] [--trace <csv, 10 Hz>]
@@ -16,6 +16,7 @@
 #include <string>
 
 #include "common/params.hpp"
+#include "common/units.hpp"
 #include "common/yaml_params.hpp"
 #include "vehicle/tools/mission_run.hpp"
 
@@ -78,7 +79,7 @@ int main(int argc, char** argv) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (tf) std::fclose(tf);
     const double kWh = 1.0 / 3.6e6, km = r.distance_m / 1000.0;
-    const double litres = r.fuel_kg / 0.835;
+    const double litres = units::dieselLitres(r.fuel_kg);
     std::printf("mission %s, m = %.0f kg, ambient %.1f C, dt %.3f s, wall time %.1f s\n",
                 mp.cycle_file.c_str(), vp.totalMass_kg(), ambient_C, opt.dt_s, wall);
     std::printf("duration            %10.1f s\n", r.duration_s);
@@ -97,8 +98,9 @@ int main(int argc, char** argv) {
                 n_stops, min_frac);
     std::printf("max stop pos. error %10.1f m\n", r.max_stop_position_error_m);
     std::printf("time at standstill  %10.1f s\n", r.idle_standing_s);
-    std::printf("fuel                %10.3f kg = %.2f L/100km (0.835 kg/L), %.1f g/km\n", r.fuel_kg,
-                100.0 * litres / km, 1000.0 * r.fuel_kg / km);
+    std::printf("fuel                %10.3f kg = %.2f L/100km (%.3f kg/L), %.1f g/km\n", r.fuel_kg,
+                100.0 * litres / km, units::kDieselDensity_kg_m3 * units::kM3_per_litre,
+                1000.0 * r.fuel_kg / km);
     std::printf("engine positive work %9.2f kWh (%.3f kWh/km), brake work %.2f kWh\n",
                 r.engine_positive_work_J * kWh, r.engine_positive_work_J * kWh / km,
                 r.engine_brake_work_J * kWh);
