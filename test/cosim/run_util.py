@@ -78,3 +78,28 @@ def pid_of_node(proc, name, timeout_s=30.0):
             return pids[0]
         time.sleep(0.1)
     raise RuntimeError("node %s not found" % name)
+
+
+CHAINS = ("[[vehicle], [engine], [aftertreatment, cooling]]",
+          "[[vehicle], [engine], [aftertreatment], [cooling]]")
+
+
+def chain_length_check(launch_file, tmp, until, **args):
+    """The baseline with the torque chain vehicle -> engine and the thermal nodes after it, in
+    one group and in two (a chain of 3 or 4 groups, the same data dependencies): returns
+    (bag messages of the two runs without /twin/run_info, statuses, number of stamps at which
+    the engine's state used the speed the vehicle commanded for that very step -- no macro-step
+    delay -- and number of stamps compared)."""
+    import rosbag
+    bags, statuses = [], []
+    for i, order in enumerate(CHAINS):
+        out = os.path.join(tmp, "chain%d" % i)
+        statuses.append(run_launch(launch_file, out, until=until, record_period=0, order=order,
+                                   timeout=20.0, **args))
+        bags.append([m for m in bag_messages(os.path.join(out, "run.bag")) if m[0] != "/twin/run_info"])
+    eng, cmd = {}, {}
+    with rosbag.Bag(os.path.join(tmp, "chain1", "run.bag")) as b:
+        for topic, m, _ in b.read_messages(topics=["/engine/state", "/vehicle/engine_command"]):
+            (eng if topic == "/engine/state" else cmd)[m.header.stamp.to_nsec()] = m
+    same = sum(1 for t, e in eng.items() if t > 0 and e.engine_speed_rad_s == cmd[t].engine_speed_rad_s)
+    return bags, statuses, same, sum(1 for t in eng if t > 0)

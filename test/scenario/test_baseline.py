@@ -324,6 +324,18 @@ class Failures(unittest.TestCase):
     def test_bad_order(self):
         self.expect_rejected("stepper", "'order'", order="[[vehicle], [engine], [vehicle]]")
 
+    def test_chain_length_changes_neither_delay_nor_result(self):
+        """Map engine: the torque chain vehicle -> engine has no macro-step delay (the engine steps
+        on the speed commanded for that very step) and the run is the same bag whether the
+        thermal nodes after it form one group or two (data-driven stepping: groups order the
+        reads, not the wall-clock work)."""
+        bags, sts, same, n = run_util.chain_length_check(LAUNCH, self.tmp, 20.0)
+        for st in sts:
+            self.assertEqual(st["status"], "ok", st)
+        self.assertEqual(n, 2000)
+        self.assertEqual(same, n)
+        self.assertEqual(bags[0], bags[1])
+
     def test_multirate_ordered_run(self):
         """The engine at 20 ms (its YAML's cosim/ key passes the model's unknown-key check),
         vehicle then engine (Gauss-Seidel): the run completes, recorded every 10 ms."""
