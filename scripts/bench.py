@@ -58,6 +58,7 @@ def run_scenario(scenario, out, args):
     with open(os.path.join(out, "status.json")) as f:
         st = json.load(f)
     s["compute_time_s"] = st.get("compute_time_s", {})
+    s["process_cpu_s"] = st.get("process_cpu_s", {})
     s["process_wall_s"] = wall
     return s
 
@@ -75,17 +76,25 @@ def bench_map(a):
             rows.append((mode, s))
     print("\nbaseline_urban, map engine, ambient 25 C, macro step %s s" %
           (rows[0][1]["macro_step_s"] if rows else "?"))
-    print("| mode | sim time [s] | wall time [s] | wall/sim | wall / summed compute | steps/s | distance [km] | fuel [L/100km] | compute time per node [s] |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("compute = the models' steps (steady clock); process CPU = user + system CPU from START to the end "
+          "of the processes hosting participants (nodelets: the one manager, the stepper's nodelet in it; "
+          "nodes: the stepper's own process not counted; roslaunch, rosmaster, rosout never)")
+    print("| mode | sim time [s] | wall time [s] | wall/sim | wall / summed compute | wall / participants' process CPU | steps/s | distance [km] | fuel [L/100km] | compute time per node [s] | process CPU [s] |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for mode, s in rows:
         steps = s["sim_time_s"] / s["macro_step_s"]
         compute = sum(s["compute_time_s"].values())
-        print("| %s | %.1f | %.1f | %.4f | %.2f | %.0f | %.3f | %.2f | %s |" % (
+        procs = {", ".join(v["participants"]): v["cpu_s"] - v["cpu_at_start_s"]
+                 for v in s["process_cpu_s"].values() if v["participants"] != ["stepper"]}
+        cpu = sum(procs.values())
+        print("| %s | %.1f | %.1f | %.4f | %.2f | %.2f | %.0f | %.3f | %.2f | %s | %s |" % (
             mode, s["sim_time_s"], s["wall_time_s"], s["wall_time_s"] / s["sim_time_s"],
             s["wall_time_s"] / compute if compute > 0 else float("nan"),
+            s["wall_time_s"] / cpu if cpu > 0 else float("nan"),
             steps / s["wall_time_s"], s.get("distance_km", float("nan")),
             s.get("fuel_l_per_100km", float("nan")),
-            ", ".join("%s %.1f" % kv for kv in sorted(s["compute_time_s"].items()))))
+            ", ".join("%s %.1f" % kv for kv in sorted(s["compute_time_s"].items())),
+            "; ".join("%s %.1f" % kv for kv in sorted(procs.items()))))
     with open(os.path.join(REPO, "results", "bench", "map.json"), "w") as f:
         json.dump(dict(rows), f, indent=2)
     return 0 if len(rows) == 2 else 1

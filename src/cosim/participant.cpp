@@ -123,6 +123,8 @@ class Participant::Hooks : public core::ParticipantHooks {
     s.status = static_cast<uint8_t>(c.status);
     s.step = c.step;
     s.compute_time_s = c.compute_time_s;
+    s.process_cpu_s = c.process_cpu_s;
+    s.process = c.process;
     s.message = c.message;
     s.outputs = c.outputs;
     s.inputs = c.inputs;

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iomanip>
 
+#include "cosim/core/process_cpu.hpp"
 #include "cosim/input_buffer.hpp"
 
 namespace hbt::cosim {
@@ -110,6 +111,8 @@ void Stepper::onStatus(const StepStatus::ConstPtr& m) {
   s.step = m->step;
   s.t = static_cast<core::Nanos>(m->header.stamp.toNSec());
   s.compute_time_s = m->compute_time_s;
+  s.process_cpu_s = m->process_cpu_s;
+  s.process = m->process;
   s.message = m->message;
   s.outputs = m->outputs;
   s.inputs = m->inputs;
@@ -122,6 +125,7 @@ void Stepper::onStatus(const StepStatus::ConstPtr& m) {
 void Stepper::onTimer(const ros::WallTimerEvent&) { core_->onTick(wallNow()); }
 
 void Stepper::sendCommand(const core::Command& c) {
+  if (c.command == core::Cmd::Start) cpu_at_start_s_ = core::processCpuSeconds();
   StepCommand m;
   m.header.stamp = fromNanos(c.t);
   m.command = static_cast<uint8_t>(c.command);
@@ -197,6 +201,21 @@ void Stepper::writeStatus(const std::string& status, const std::string& message,
       f << (first ? "" : ",") << "\n    \"" << kv.first << "\": " << kv.second.compute_s;
       first = false;
     }
+  f << "\n  },\n  \"process_cpu_s\": {";
+  // CPU time per process (user + system) [s]: the participants' processes and the stepper's own
+  std::map<std::string, core::CpuReport> reports;
+  if (core_)
+    for (const auto& kv : core_->peers()) reports[kv.first] = kv.second.cpu;
+  reports["stepper"] = {core::processName(), core::processCpuSeconds(), cpu_at_start_s_};
+  first = true;
+  for (const auto& p : core::cpuByProcess(reports)) {
+    f << (first ? "" : ",") << "\n    \"" << jsonEscape(p.process) << "\": {\"cpu_s\": " << p.cpu_s
+      << ", \"cpu_at_start_s\": " << p.cpu_at_start_s << ", \"participants\": [";
+    for (std::size_t i = 0; i < p.participants.size(); ++i)
+      f << (i ? ", " : "") << "\"" << jsonEscape(p.participants[i]) << "\"";
+    f << "]}";
+    first = false;
+  }
   f << "\n  }\n}\n";
 }
 

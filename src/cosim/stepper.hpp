@@ -3,7 +3,7 @@
 // parameters, translates StepStatus -> core events and core commands -> StepCommand and /clock,
 // drives the core's wall-clock timeouts with a 50 ms wall timer, prints the progress line, writes
 // `status_file` (JSON: status, message, sim_time_s, wall_time_s, steps, macro_step_s, compute_time_s
-// per node) and shuts ROS down. The run ends at the end of the mission (a participant reports
+// per node, process_cpu_s per process: core/process_cpu.hpp) and shuts ROS down. The run ends at the end of the mission (a participant reports
 // FINISHED), at `until_s`, on an ERROR status (at the step that failed), or when no participant
 // progressed within `timeout_s` (wall clock; the silent ones are named). The exit status of a run is read from the status file by scripts/twin.
 //
@@ -62,6 +62,7 @@ class Stepper : public core::StepperTransport {
   std::unique_ptr<core::StepperCore> core_;
   bool progress_ = true;
   std::string status_file_;
+  double cpu_at_start_s_ = 0.0;  // this process's CPU time when START was sent [s]
   std::chrono::steady_clock::time_point epoch_, last_print_;
 };
 

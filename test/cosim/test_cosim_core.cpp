@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "cosim/core/process_cpu.hpp"
 #include "cosim_core_harness.hpp"
 
 using namespace hbt::cosim::core;
@@ -300,6 +301,22 @@ TEST(CosimCore, RecorderPeriodNotAMultipleFallsBackToBaseStep) {
   ASSERT_TRUE(bus.completed);
   EXPECT_FALSE(bus.stepper->aborted()) << bus.stepper->reason();
   EXPECT_EQ(bus.stepper->peers().at("recorder").multiple, 1u);
+}
+
+TEST(CosimCore, StatusesCarryTheirProcessCpu) {
+  // every status names the participant's process and its CPU time so far; in this harness all
+  // participants are one process (this test), as nodelets of one manager are
+  Bus bus;
+  addPair(bus);
+  bus.run(config({"a", "b"}, 0.05));
+  ASSERT_TRUE(bus.completed);
+  for (const char* n : {"a", "b"}) {
+    const auto& p = bus.stepper->peers().at(n);
+    EXPECT_EQ(p.cpu.process, hbt::cosim::core::processName()) << n;
+    EXPECT_GT(p.cpu.cpu_at_start_s, 0.0) << n;
+    EXPECT_GE(p.cpu.cpu_s, p.cpu.cpu_at_start_s) << n;  // CLOSED after READY
+    EXPECT_LE(p.cpu.cpu_s, hbt::cosim::core::processCpuSeconds()) << n;
+  }
 }
 
 TEST(CosimCore, BadMacroStepRejectedBeforeStepZero) {

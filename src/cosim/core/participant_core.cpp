@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "cosim/core/process_cpu.hpp"
 
 namespace hbt::cosim::core {
 namespace {
@@ -89,6 +90,8 @@ void ParticipantCore::report(St status, uint64_t step, Nanos t, const std::strin
   s.step = step;
   s.t = t;
   s.compute_time_s = compute_s_;
+  s.process_cpu_s = processCpuSeconds();
+  s.process = processName();
   s.message = msg;
   if (status == St::Announce || status == St::Ready) {
     for (const InputPort* in : inputs_) s.inputs.push_back(in->resolvedTopic());

@@ -69,6 +69,10 @@ struct Status {
   uint64_t step = 0;
   Nanos t = 0;                  // DONE, FINISHED: t_n (stamp of the last outputs published)
   double compute_time_s = 0.0;  // in the model so far [s, steady clock] (participant_core.cpp)
+  /// CPU time (user + system: the transport's system calls count) of the participant's process so
+  /// far [s], and that process as "host:pid" -- the nodelets of one manager share both.
+  double process_cpu_s = 0.0;
+  std::string process;
   std::string message;
   // ANNOUNCE, READY
   std::vector<std::string> outputs;   // resolved output topics (ANNOUNCE)

@@ -115,6 +115,8 @@ void StepperCore::onStatus(const Status& s, double wall_s) {
   if (it == peers_.end()) return;  // not a participant of this run
   Peer& p = it->second;
   p.compute_s = s.compute_time_s;
+  p.cpu.cpu_s = s.process_cpu_s;
+  p.cpu.process = s.process;
   switch (phase_) {
     case Phase::Announce:
     case Phase::Sync:
@@ -131,7 +133,10 @@ void StepperCore::onStatus(const Status& s, double wall_s) {
         p.last_step = s.step;
         p.waiting_for = s.message;
         p.multiple = s.step_multiple < 1 ? 1 : s.step_multiple;
-        if (s.status == St::Ready) p.inputs = s.inputs;
+        if (s.status == St::Ready) {
+          p.inputs = s.inputs;
+          p.cpu.cpu_at_start_s = s.process_cpu_s;
+        }
       }
       return;
     case Phase::Stepping:

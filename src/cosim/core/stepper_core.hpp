@@ -43,6 +43,7 @@
 #include <string>
 #include <vector>
 
+#include "cosim/core/process_cpu.hpp"
 #include "cosim/core/protocol.hpp"
 
 namespace hbt::cosim::core {
@@ -94,6 +95,7 @@ class StepperCore {
     uint64_t next = 0;          // n: every due step below it is done
     uint32_t multiple = 1, group = 0;
     double compute_s = 0.0, mission_duration_s = 0.0;
+    CpuReport cpu;               // of its process (Status::process_cpu_s): last report, at READY
     std::vector<std::string> outputs, inputs;
     std::string waiting_for;    // start-up: links; stepping: the answer to the last QUERY
     std::string error;          // its ERROR message (stepping)
