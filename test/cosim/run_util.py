@@ -46,9 +46,18 @@ def wait(proc, timeout_s):
 
 
 def run_launch(launch_file, out_dir, timeout_s=300, **args):
+    """Runs a launch file to its end; returns its status.json. A run that did not end "ok" prints
+    the end of its roslaunch.log (to stderr, for the test log: why a node did not answer)."""
+    import sys
     proc = start_launch(launch_file, out_dir, **args)
     wait(proc, timeout_s)
-    return read_status(out_dir)
+    st = read_status(out_dir)
+    if st.get("status") != "ok":
+        with open(os.path.join(out_dir, "roslaunch.log"), errors="replace") as f:
+            tail = f.readlines()[-40:]
+        sys.stderr.write("run_launch %s %s: %s\n--- end of %s/roslaunch.log ---\n%s---\n" % (
+            os.path.basename(launch_file), args, st.get("message"), out_dir, "".join(tail)))
+    return st
 
 
 def read_status(out_dir):
