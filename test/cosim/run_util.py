@@ -112,3 +112,14 @@ def chain_length_check(launch_file, tmp, until, **args):
             (eng if topic == "/engine/state" else cmd)[m.header.stamp.to_nsec()] = m
     same = sum(1 for t, e in eng.items() if t > 0 and e.engine_speed_rad_s == cmd[t].engine_speed_rad_s)
     return bags, statuses, same, sum(1 for t in eng if t > 0)
+
+
+def assert_chain_length(tc, launch_file, tmp, until, n_steps, **args):
+    """chain_length_check's assertions for a unittest.TestCase tc: both runs ok, n_steps stamps,
+    the engine on the commanded speed of its own stamp at every one, the two bags equal."""
+    bags, sts, same, n = chain_length_check(launch_file, tmp, until, **args)
+    for st in sts:
+        tc.assertEqual(st["status"], "ok", st)
+    tc.assertEqual(n, n_steps)
+    tc.assertEqual(same, n)
+    tc.assertEqual(bags[0], bags[1])
