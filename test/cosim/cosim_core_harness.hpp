@@ -140,4 +140,28 @@ class Bus : public StepperTransport {
   void pump();
 };
 
+constexpr Nanos MS = 1000000;  // one millisecond [ns]
+
+/// A stepper configuration for `names`, base step dt_s [s], end until_s [s] (<= 0: none) and a
+/// 2 s start-up timeout.
+inline StepperConfig config(std::vector<std::string> names, double until_s, double dt_s = 0.01) {
+  StepperConfig c;
+  c.participants = std::move(names);
+  c.dt_s = dt_s;
+  c.until_s = until_s;
+  c.startup_timeout_s = 2.0;
+  return c;
+}
+
+/// Two participants a <-> b coupled both ways (the oscillator layout).
+inline void addPair(Bus& bus, Faults fa = {}, Faults fb = {}) {
+  bus.add("a", {"/b/out"}, {"/a/out"}, fa);
+  bus.add("b", {"/a/out"}, {"/b/out"}, fb);
+}
+
+/// p asks for a macro step of s [s] in configure(), as a participant's YAML key would.
+inline void requestPeriod(FakeParticipant& p, double s) {
+  p.on_configure = [s](ParticipantCore& c) { c.requestPeriod({s, "slow.yaml", "cosim/macro_step_s"}); };
+}
+
 }  // namespace hbt::cosim::core::testing
