@@ -14,7 +14,8 @@
 //   and (here, for both models) the exhaust totals of a slower consumer (the aftertreatment,
 //   which takes their difference over its 0.1 s step as the exact mean of the 10 ms values):
 //   m_exh = Σ ṁ Δt [kg], Σ ṁ T Δt [kg K], Σ T Δt [K s], m_i = Σ ṁ y_i Δt [kg] (O2, CO2, H2O),
-//   with ṁ = max(ṁ_exh, 0) and each step's outputs (what is published at the step's end).
+//   with ṁ = max(ṁ_exh, 0) and each step's outputs (what is published at the step's end); and
+//   the crank angle θ = Σ ω Δt [rad] (the mechanical coolant pump's mean speed, 1:1).
 // Policies (one place: this class):
 //   start     reset(): at the engine's idle speed idleSpeed() (engine_map.yaml idle_speed_rad_s,
 //             the reference engine data both models read), brake torque 0, the given ambient
@@ -69,6 +70,7 @@ struct EngineOutputs {
   // exhaust totals since reset() (see the header comment): [kg], [kg K], [K s], [kg] x 3
   double exhaust_mass_kg = 0, exhaust_mass_T_kg_K = 0, exhaust_T_time_K_s = 0;
   double o2_mass_kg = 0, co2_mass_kg = 0, h2o_mass_kg = 0;
+  double crank_angle_rad = 0;                                   // Σ ω Δt since reset() [rad]
   double heat_to_coolant_W = 0, heat_to_coolant_J = 0;          // [W], cumulative [J]
   double coolant_T_K = 0, back_pressure_Pa = 0;  // loop inputs the engine used (0 = none)
   double friction_correction_Nm = 0, pumping_correction_Nm = 0;  // map: cold oil, back-pressure
@@ -119,6 +121,7 @@ class EngineModel {
     out_.o2_mass_kg += m * out_.y_O2 * dt_s;
     out_.co2_mass_kg += m * out_.y_CO2 * dt_s;
     out_.h2o_mass_kg += m * out_.y_H2O * dt_s;
+    out_.crank_angle_rad += std::max(0.0, out_.speed_rad_s) * dt_s;
     return out_;
   }
   const EngineOutputs& outputs() const { return out_; }

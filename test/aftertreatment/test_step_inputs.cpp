@@ -90,3 +90,107 @@ TEST(StepInputs, NoFlowTakesTheTimeMeanTemperatureAndThePointComposition) {
 }
 
 }  // namespace hbt::aftertreatment
+
+namespace hbt::aftertreatment {
+namespace {
+
+/// A producer integrating its 10 ms outputs into the totals as engine_model.hpp does.
+struct Producer {
+  InputTotals tot;
+  void run(double mdot_kg_s, double T_K, double yO2, double nox_kg_s, double T_published_K, int steps) {
+    for (int i = 0; i < steps; ++i) {
+      tot.exhaust_mass_kg += mdot_kg_s * 0.01;
+      tot.exhaust_mass_T_kg_K += mdot_kg_s * T_K * 0.01;
+      tot.exhaust_T_time_K_s += T_published_K * 0.01;
+      tot.o2_kg += mdot_kg_s * yO2 * 0.01;
+      tot.co2_kg += mdot_kg_s * 0.06 * 0.01;
+      tot.nox_kg += nox_kg_s * 0.01;
+    }
+  }
+};
+
+AtsInputs pointAt(double mdot, double T, double yO2) {
+  AtsInputs p;
+  p.exhaust_mass_flow_kg_s = mdot;
+  p.exhaust_T_K = T;
+  p.comp.y_O2 = yO2;
+  p.comp.y_CO2 = yO2 > 0.2 ? 0.0 : 0.06;
+  p.ambient_T_K = 313.15;
+  return p;
+}
+
+// A warm engine running (0.08 kg/s at 650 K, 12 % O2), then stopped: no flow, the published
+// temperature the map engine's no-flow value (ambient, 313.15 K) and air.
+constexpr double kRun = 0.08, kTrun = 650.0, kO2run = 0.12, kNOx = 3e-5, kTamb = 313.15, kO2air = 0.232;
+
+StepInputs primed(Producer& pr) {  // a first step after 10 s of running, so that totals are large
+  StepInputs si;
+  pr.run(kRun, kTrun, kO2run, kNOx, kTrun, 1000);
+  si.next(pr.tot, pointAt(kRun, kTrun, kO2run), 0.1);
+  return si;
+}
+
+}  // namespace
+
+TEST(StepInputs, AWindowThatStartsAnEngineStopCarriesTheRunningGas) {
+  Producer pr;
+  StepInputs si = primed(pr);
+  pr.run(kRun, kTrun, kO2run, kNOx, kTrun, 4);  // 40 ms running, then fuel cut and stop
+  pr.run(0.0, kTamb, kO2air, 0.0, kTamb, 6);
+  const AtsInputs in = si.next(pr.tot, pointAt(0.0, kTamb, kO2air), 0.1);
+  EXPECT_NEAR(in.exhaust_mass_flow_kg_s, kRun * 0.4, 1e-12);  // mass: 4 of 10 steps
+  EXPECT_NEAR(in.exhaust_T_K, kTrun, 1e-6);  // all the mass was the running engine's gas
+  EXPECT_NEAR(in.comp.y_O2, kO2run, 1e-9);
+  EXPECT_NEAR(in.nox_mass_flow_kg_s, kNOx * 0.4, 1e-15);
+}
+
+TEST(StepInputs, AWindowThatEndsAnEngineStopCarriesTheRestartedGas) {
+  Producer pr;
+  StepInputs si = primed(pr);
+  pr.run(0.0, kTamb, kO2air, 0.0, kTamb, 300);  // 3 s stopped
+  si.next(pr.tot, pointAt(0.0, kTamb, kO2air), 0.1);
+  pr.run(0.0, kTamb, kO2air, 0.0, kTamb, 7);  // restart after 70 ms: idle flow of cool gas
+  pr.run(0.03, 420.0, 0.17, 5e-6, 420.0, 3);
+  const AtsInputs in = si.next(pr.tot, pointAt(0.03, 420.0, 0.17), 0.1);
+  EXPECT_NEAR(in.exhaust_mass_flow_kg_s, 0.03 * 0.3, 1e-12);
+  EXPECT_NEAR(in.exhaust_T_K, 420.0, 1e-6);
+  EXPECT_NEAR(in.comp.y_O2, 0.17, 1e-9);
+  EXPECT_NEAR(in.nox_mass_flow_kg_s, 5e-6 * 0.3, 1e-15);
+}
+
+TEST(StepInputs, AWholeWindowWithTheEngineOffIsNoFlowAtTheNoFlowTemperature) {
+  Producer pr;
+  StepInputs si = primed(pr);
+  pr.run(0.0, kTamb, kO2air, 0.0, kTamb, 10);
+  si.next(pr.tot, pointAt(0.0, kTamb, kO2air), 0.1);
+  pr.run(0.0, kTamb, kO2air, 0.0, kTamb, 10);
+  const AtsInputs in = si.next(pr.tot, pointAt(0.0, kTamb, kO2air), 0.1);
+  EXPECT_EQ(in.exhaust_mass_flow_kg_s, 0.0);
+  EXPECT_EQ(in.nox_mass_flow_kg_s, 0.0);
+  EXPECT_NEAR(in.exhaust_T_K, kTamb, 1e-9);  // what the engine publishes for no flow
+  EXPECT_EQ(in.comp.y_O2, kO2air);           // the sample's composition: air
+  const AtsInputs air = pointAt(0.0, kTamb, kO2air);
+  EXPECT_NEAR(in.comp.y_N2, 1.0 - air.comp.y_O2 - air.comp.y_CO2 - air.comp.y_H2O, 1e-15);
+}
+
+TEST(StepInputs, ASpinDownFlowTooSmallToWeightIsNoFlowNotZeroKelvin) {
+  // the crank coasting down: the pumped flow decays through 1e-11 kg/s, so the mass total still
+  // moves by an ulp or two while the mass x temperature total no longer does
+  Producer pr;
+  StepInputs si = primed(pr);
+  for (int k = 0; k < 60; ++k) {  // 6 s of decay, one ATS step every 0.1 s
+    for (int i = 0; i < 10; ++i) {
+      const double mdot = 1e-4 * std::exp(-0.5 * (10 * k + i));
+      pr.run(mdot, kTamb, kO2air, 0.0, kTamb, 1);
+    }
+    const AtsInputs in = si.next(pr.tot, pointAt(0.0, kTamb, kO2air), 0.1);
+    ASSERT_TRUE(std::isfinite(in.exhaust_T_K)) << k;
+    EXPECT_GT(in.exhaust_T_K, 300.0) << k;  // the gas temperature, or the no-flow one: both 313 K
+    EXPECT_LT(in.exhaust_T_K, 330.0) << k;
+    EXPECT_GE(in.exhaust_mass_flow_kg_s, 0.0) << k;
+    EXPECT_LE(in.exhaust_mass_flow_kg_s, 1e-4) << k;
+    EXPECT_GE(in.comp.y_N2, 0.0) << k;
+  }
+}
+
+}  // namespace hbt::aftertreatment

@@ -1,6 +1,7 @@
 // Whole system: energy balance, dosing rule, light-off, DOC, bad input.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -208,6 +209,42 @@ TEST(Aftertreatment, ConfigFileLoadsAndBadInputIsRejected) {
   ParamSet qs;
   q.declare(qs);
   EXPECT_THROW(applyParams(qs, y), InputError);
+}
+
+TEST(Aftertreatment, AWarmSystemWithoutFlowCoolsThroughItsCanOnly) {
+  // A warm one-box at an engine stop: no exhaust flow. The gas temperature it is told has no
+  // effect (no enthalpy flux), every brick cools towards ambient through its can alone, and the
+  // energy balance closes with stored change = -can loss.
+  const double Tamb = 313.15, Twarm = 623.15;
+  AtsInputs off;
+  off.exhaust_mass_flow_kg_s = 0.0;
+  off.ambient_T_K = Tamb;
+  off.comp.y_O2 = 0.232;
+  off.comp.y_CO2 = off.comp.y_H2O = 0.0;
+  off.comp.y_N2 = 0.768;
+  Aftertreatment a(test::loadParams()), b(test::loadParams());
+  a.reset(Twarm);
+  b.reset(Twarm);
+  std::array<double, kNumBricks> before{};
+  for (int k = 0; k < 600; ++k) {  // a 60 s stop
+    for (int i = 0; i < kNumBricks; ++i) before[i] = a.outputs().brick_T_K[i];
+    off.exhaust_T_K = Tamb;
+    a.step(0.1, off);
+    off.exhaust_T_K = 900.0;  // any gas temperature: nothing flows
+    b.step(0.1, off);
+    for (int i = 0; i < kNumBricks; ++i) {
+      ASSERT_EQ(a.outputs().brick_T_K[i], b.outputs().brick_T_K[i]) << i;
+      ASSERT_LT(a.outputs().brick_T_K[i], before[i]) << i;  // cooling
+      ASSERT_GT(a.outputs().brick_T_K[i], Tamb) << i;       // never below ambient
+    }
+  }
+  const AtsEnergy& e = a.energy();
+  EXPECT_EQ(e.enthalpy_in_J, 0.0);
+  EXPECT_EQ(e.enthalpy_out_J, 0.0);
+  EXPECT_GT(e.can_loss_J, 0.0);
+  EXPECT_NEAR(e.stored_change_J, -e.can_loss_J, 1e-9 * e.can_loss_J);
+  EXPECT_EQ(a.nitrogen().nh3_dosed_mol, 0.0);  // no NOx, no flow: no dosing
+  EXPECT_EQ(a.outputs().tailpipe_nox_kg, 0.0);
 }
 
 TEST(Aftertreatment, NonPhysicalInputStopsNamingTheQuantity) {

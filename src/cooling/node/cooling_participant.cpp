@@ -54,26 +54,22 @@ void CoolingParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim:
 void CoolingParticipant::step(const ros::Time& t, double dt_s) {
   const auto& h = heat_->at(t);
   const auto& v = vehicle_->at(t);
-  CoolingInputs in;
-  // Heat inputs: the mean over the last P = dt_s (this node's macro step) from the producers'
-  // cumulative heat, differenced between this node's step starts: exact energy, no sampling of a
-  // 10 ms signal every 0.1 s (sampling moved the coolant's rise by 0.35 % in 300 s, test_rates).
-  // The first step uses the instantaneous value.
-  const double E_engine_J = h.heat_to_coolant_j;
-  in.engine_heat_W = started_ ? (E_engine_J - prev_engine_heat_J_) / dt_s : h.heat_to_coolant_w;
-  prev_engine_heat_J_ = E_engine_J;
-  in.pump_speed_rad_s = h.coolant_pump_speed_rad_s;
-  in.vehicle_speed_m_s = v.vehicle_speed_m_s;
-  in.ambient_T_K = v.ambient_temperature_k > 0.0 ? v.ambient_temperature_k : ambient_T_K_;
-  in.ambient_p_Pa = ambient_p_Pa_;
-  in.fan_demand = v.fan_demand;
-  // e-machine + inverter heat into the LT coolant (hybrid), the same way
-  if (emachine_) {
+  CoolingTotals now;  // cumulative since t = 0: their step means (step_inputs.hpp)
+  now.engine_heat_J = h.heat_to_coolant_j;
+  now.pump_angle_rad = h.coolant_pump_angle_rad;
+  CoolingInputs point;  // the sample's own values: the first step and what is not averaged
+  point.engine_heat_W = h.heat_to_coolant_w;
+  point.pump_speed_rad_s = h.coolant_pump_speed_rad_s;
+  point.vehicle_speed_m_s = v.vehicle_speed_m_s;
+  point.ambient_T_K = v.ambient_temperature_k > 0.0 ? v.ambient_temperature_k : ambient_T_K_;
+  point.ambient_p_Pa = ambient_p_Pa_;
+  point.fan_demand = v.fan_demand;
+  if (emachine_) {  // e-machine + inverter heat into the LT coolant (hybrid)
     const auto& m = emachine_->at(t);
-    in.lt_heat_W = started_ ? (m.heat_to_coolant_energy_j - prev_lt_heat_J_) / dt_s : m.lt_heat_w;
-    prev_lt_heat_J_ = m.heat_to_coolant_energy_j;
+    now.lt_heat_J = m.heat_to_coolant_energy_j;
+    point.lt_heat_W = m.lt_heat_w;
   }
-  started_ = true;
+  const CoolingInputs in = inputs_.next(now, point, dt_s);
   model_->step(dt_s, in);
   last_in_ = in;
 }

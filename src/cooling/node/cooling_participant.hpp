@@ -1,8 +1,9 @@
 // ROS bridge of the cooling system: converts messages and parameters, nothing else. Model:
 // hbt::cooling::CoolingModel (../cooling_model.hpp).
 //
-// Inputs  (stamped t_k): /engine/heat (EngineHeat: heat_to_coolant_j differenced over this node's
-//                        macro step = the mean heat of the last 0.1 s; coolant_pump_speed_rad_s),
+// Inputs  (stamped t_k): /engine/heat (EngineHeat: heat_to_coolant_j and coolant_pump_angle_rad
+//                        differenced over this node's macro step = the mean heat and pump speed of
+//                        the last 0.1 s, ../step_inputs.hpp),
 //                        /vehicle/to_cooling (VehicleToCooling: vehicle speed, ambient T, fan_demand).
 // Output  (stamped t_k): /cooling/state (CoolingState). fan_power_w is the signed fan shaft
 //                        power (> 0 absorbed, < 0 windmilling = returned to the shaft);
@@ -23,6 +24,7 @@
 #include <memory>
 
 #include "cooling/cooling_model.hpp"
+#include "cooling/step_inputs.hpp"
 #include "cosim/participant.hpp"
 
 namespace hbt::cooling {
@@ -46,10 +48,9 @@ class CoolingParticipant : public cosim::Participant {
   cosim::Output state_pub_;
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = units::kStandardAtmosphere_Pa;
   CoolingInputs last_in_;
-  bool started_ = false;                                       // a step was taken
+  StepInputs inputs_;                                          // step means of the producers' totals
   cosim::core::Warning* overheat_ = nullptr;
   std::unique_ptr<cosim::core::Hysteresis> overheat_level_;    // HT coolant [degC]
-  double prev_engine_heat_J_ = 0.0, prev_lt_heat_J_ = 0.0;     // producers' cumulative heat at the last step [J]
 };
 
 }  // namespace hbt::cooling

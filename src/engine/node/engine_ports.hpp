@@ -80,6 +80,7 @@ class EnginePorts {
     h.heat_to_coolant_w = v.heat_to_coolant_W;
     h.heat_to_coolant_j = v.heat_to_coolant_J;
     h.coolant_pump_speed_rad_s = v.speed_rad_s;  // mechanical pump driven 1:1 by the crank
+    h.coolant_pump_angle_rad = v.crank_angle_rad;
     heat_.publish(boost::make_shared<hybrid_bus_twin::EngineHeat>(h));
   }
 
