@@ -6,7 +6,7 @@ Summary keys: em_boost_kwh (crank work of the e-machine while motoring), em_brak
 it absorbed while generating, positive: regenerative braking + load-point shift), em_regen_kwh
 (the part absorbed while the EMS was in regen mode, booked per bag interval by the mode at the
 interval's end), em_loss_kwh, battery_loss_kwh, battery_heat_kwh, dcdc_kwh, soc_initial,
-soc_final, battery_max_c, winding_max_c, em_derating_s (time with the e-machine's live limits
+soc_final, soc_min and soc_max (the lowest and highest SOC of the run's bag samples), battery_max_c, winding_max_c, em_derating_s (time with the e-machine's live limits
 below its peak envelope), em_clamped_s (time the EMS asked beyond the e-machine's live limits and
 the e-machine clamped), battery_limited_s (time the battery's power request exceeded its limits), engine_off_s, engine_starts, cranking_s, warmup_inhibit_s,
 electric_path_closure (|battery terminal energy - e-machine DC energy - DC/DC energy - unmet| /
@@ -58,6 +58,8 @@ def hybrid_summary(data, summary):
     s["battery_heat_kwh"] = _l(bat, "heat_to_air_j") / J_PER_KWH
     s["soc_initial"] = float(bat["soc"][0])
     s["soc_final"] = _l(bat, "soc")
+    s["soc_min"] = float(np.min(bat["soc"]))
+    s["soc_max"] = float(np.max(bat["soc"]))
     s["battery_max_c"] = float(np.max(bat["cell_temperature_k"])) - 273.15
     s["winding_max_c"] = float(np.max(em["winding_temperature_k"])) - 273.15
     der = em["derating_factor"] < 1.0 - 1e-9

@@ -55,6 +55,7 @@ def existing(kind, folder=None, suffix=""):
 ARGS = {
     "ambient": number(-40.0, 55.0),          # [degC]: the studies use 0, 25, 40
     "pressure": number(50.0, 120.0),         # [kPa] ambient pressure (101.325 at sea level; ~80 at 2000 m)
+    "start": choice("cold", "warm"),         # thermal start state (warm: the configs' warm_start/)
     "engine": choice("map", "1d"),
     "solver": choice("fsm", "tvd"),
     "mode": choice("nodes", "nodelets"),

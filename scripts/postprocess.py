@@ -142,6 +142,7 @@ def summarise(scenario, args, status, data, stops_csv, sv=ledger.STOP_SERVICE_DE
         "architecture": arch,
         "engine_model": args.get("engine", "map"),
         "ambient_c": float(args.get("ambient", 25.0)),
+        "start": args.get("start") or "cold",  # cold: everything at ambient; warm: warm_start/ of the configs
         "aux_set": args.get("aux") or ("vecto_p1_example_48v" if arch == "p1_48v" else "vecto_p1_example"),
         "gearbox_set": args.get("gearbox") or "typical",  # gear loss set, config/gearbox/<set>.yaml
         "macro_step_s": status["macro_step_s"],

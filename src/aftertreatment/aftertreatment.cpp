@@ -105,6 +105,14 @@ void Aftertreatment::reset(double T_K, double ambient_p_Pa) {
   out_.nh3_stored_mol = stored0_;
 }
 
+void Aftertreatment::resetWarm(double brick_T_K, double nh3_fill, double ambient_p_Pa) {
+  reset(brick_T_K, ambient_p_Pa);
+  const double capacity_mol = p_.scr_site_density_mol_m3 * bricks_[kSCR]->sliceVolume() * bricks_[kSCR]->slices();
+  scr_->setCoverage(std::clamp(nh3_fill * storageTarget_mol() / capacity_mol, 0.0, 1.0));
+  stored0_ = scr_->storedMol();
+  out_.nh3_stored_mol = stored0_;
+}
+
 double Aftertreatment::storageTarget_mol() const {
   const Brick& s = *bricks_[kSCR];
   const double p = p_brick_[kSCR];

@@ -128,6 +128,10 @@ class Aftertreatment {
 
   /// Cold start: every brick (substrate, washcoat, can) at T_K, SCR coverage from the parameters.
   void reset(double T_K, double ambient_p_Pa = units::kStandardAtmosphere_Pa);
+  /// Warm start: every brick at brick_T_K, the SCR's NH3 store at nh3_fill x the dosing's storage
+  /// target at that temperature (storageTarget_mol: equilibrium with dosing/ref_nh3_ppm), the
+  /// same coverage in every slice; balances count from this state.
+  void resetWarm(double brick_T_K, double nh3_fill, double ambient_p_Pa = units::kStandardAtmosphere_Pa);
   /// Advances by dt [s]. Throws ModelDivergence (naming brick and quantity) on a non-physical
   /// state or input.
   void step(double dt, const AtsInputs& in);

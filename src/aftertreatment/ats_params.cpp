@@ -99,6 +99,10 @@ void AtsParams::declare(ParamSet& ps) {
   ps.add("conversion", lightoff_conversion, "-", 0.05, 0.99, "SCR conversion defining light-off");
   ps.add("min_nox_kg_s", lightoff_min_nox_kg_s, "kg/s", 0.0, 1e-3, "no decision below this NOx inflow");
 
+  ps.setPrefix("warm_start/");
+  ps.add("brick_K", warm_brick_T_K, "K", 300.0, 900.0, "start:=warm: every brick");
+  ps.add("nh3_fill_of_target", warm_nh3_fill, "-", 0.0, 1.5, "start:=warm: SCR NH3 store / dosing target");
+
   ps.setPrefix("numerics/");
   ps.add("rtol", rtol, "-", 1e-12, 1e-3, "CVODE relative tolerance");
   ps.add("atol_theta", atol_theta, "-", 1e-15, 1e-4, "CVODE absolute tolerance on coverage");

@@ -96,6 +96,10 @@ struct AtsParams {
   double lightoff_conversion = 0.5;        ///< SCR conversion defining light-off
   double lightoff_min_nox_kg_s = 1e-6;     ///< no decision below this inflowing NOx
 
+  // Warm start (launch argument start:=warm): a one-box mid-shift.
+  double warm_brick_T_K = 523.15;          ///< every brick (substrate, washcoat, can) [K]
+  double warm_nh3_fill = 0.9;              ///< SCR NH3 store / the dosing's storage target [-]
+
   // Numerics (CVODE for the NH3 storage).
   double rtol = 1e-8;
   double atol_theta = 1e-10;

@@ -39,7 +39,9 @@ void BatteryParams::declare(ParamSet& ps) {
   ps.add("h_W_m2K", thermal.h_W_m2K, "W/(m^2 K)", 0.0, 500.0, "cell-to-air heat transfer coefficient");
   ps.add("extra_heat_capacity_J_K", thermal.extra_heat_capacity_J_K, "J/K", 0.0, 1e7,
          "non-cell thermal mass lumped with the cells");
-
+  ps.setPrefix("warm_start/");
+  ps.add("cell_above_ambient_K", thermal.warm_cell_above_ambient_K, "K", 0.0, 40.0,
+         "start:=warm: cells above the ambient air");
 
   ps.setPrefix("numerics/");
   ps.add("min_temperature_K", numerics.min_temperature_K, "K", 100.0, 300.0, "divergence bound");

@@ -48,6 +48,7 @@ struct LimitParams {
 struct ThermalParams {
   double h_W_m2K = 15.0;                  // cell surface -> cooling air
   double extra_heat_capacity_J_K = 0.0;   // housing, busbars, frames lumped with the cells
+  double warm_cell_above_ambient_K = 5.0; // start:=warm: cells this far above the ambient air
 };
 
 struct NumericsParams {

@@ -50,15 +50,20 @@ CoolingModel::CoolingModel(const CoolingParams& p, const std::string& file) : p_
   reset(units::celsiusToK(25.0));
 }
 
-void CoolingModel::reset(double ambient_T_K) {
-  T_m_ = T_c_ = T_l_ = T_w_ = ambient_T_K;
-  T_m0_ = T_c0_ = T_l0_ = ambient_T_K;
+void CoolingModel::reset(double ambient_T_K) { reset(ambient_T_K, ambient_T_K, ambient_T_K, ambient_T_K); }
+
+void CoolingModel::reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K) {
+  T_m_ = T_m0_ = metal_T_K;
+  T_c_ = T_c0_ = T_w_ = coolant_ht_T_K;
+  T_l_ = T_l0_ = coolant_lt_T_K;
   T_p_ = T_w_ - 0.5 * p_.thermostat.hysteresis_K;  // on the heating branch
   eng_ = 0.0;
   w_lt_ = p_.lt.pump_idle_speed_rad_s;
-  heater_valve_open_ = false;
+  heater_valve_open_ = T_c_ >= p_.heater.min_coolant_K;
   out_ = CoolingOutputs{};
-  out_.coolant_ht_T_K = out_.metal_T_K = out_.coolant_lt_T_K = ambient_T_K;
+  out_.coolant_ht_T_K = T_c_;
+  out_.metal_T_K = T_m_;
+  out_.coolant_lt_T_K = T_l_;
   out_.ht_air_in_T_K = ambient_T_K;
   out_.thermostat_opening = openingFromPlay(T_p_);
   out_.warmup_time_s = T_c_ >= p_.thermostat.opening_start_K ? 0.0 : -1.0;

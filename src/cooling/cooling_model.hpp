@@ -97,6 +97,11 @@ class CoolingModel {
   /// Cold start: every temperature = ambient_T_K, clutches at rest (e = 0, LT pump idle),
   /// thermostat closed, cumulatives 0.
   void reset(double ambient_T_K);
+  /// Restarts warm: metal + oil, HT and LT coolant at the given temperatures [K] (the wax and its
+  /// play on the heating branch at the coolant, the heater valve as the coolant sets it), fan
+  /// clutch released; the stored energy and warm-up time count from this state (warm-up time 0
+  /// when the coolant is already at the thermostat's opening).
+  void reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K);
   /// Advances by dt_s with inputs held constant. Throws ModelDivergence naming the quantity.
   void step(double dt_s, const CoolingInputs& in);
   const CoolingOutputs& outputs() const { return out_; }

@@ -91,6 +91,11 @@ void CoolingParams::declare(ParamSet& ps) {
   ps.add("max_substep_s", numerics.max_substep_s, "s", 1e-4, 10.0, "frozen-coefficient substep");
   ps.add("min_temperature_K", numerics.min_temperature_K, "K", 100.0, 300.0, "divergence bound");
   ps.add("max_temperature_K", numerics.max_temperature_K, "K", 350.0, 1000.0, "divergence bound");
+  ps.setPrefix("warm_start/");
+  ps.add("metal_K", warm_start.metal_K, "K", 300.0, 400.0, "start:=warm: engine metal + oil");
+  ps.add("coolant_ht_K", warm_start.coolant_ht_K, "K", 300.0, 390.0, "start:=warm: HT coolant");
+  ps.add("coolant_lt_above_ambient_K", warm_start.coolant_lt_above_ambient_K, "K", 0.0, 50.0,
+         "start:=warm: LT coolant above ambient");
   ps.setPrefix("");
 }
 

@@ -102,6 +102,14 @@ struct NumericsParams {
   double max_temperature_K = 450.0;
 };
 
+/// The warm start (launch argument start:=warm): a bus mid-shift, its engine at the regulated
+/// temperature. Temperatures in K.
+struct WarmStartParams {
+  double metal_K = 359.15;                   // engine metal + oil [K]
+  double coolant_ht_K = 356.15;              // HT coolant [K]
+  double coolant_lt_above_ambient_K = 3.0;   // LT (e-drive) coolant above ambient [K]
+};
+
 struct CoolingParams {
   HtCircuitParams ht;
   ThermostatParams thermostat;
@@ -111,8 +119,9 @@ struct CoolingParams {
   LtCircuitParams lt;
   AirParams air;
   NumericsParams numerics;
+  WarmStartParams warm_start;
   /// Registers every parameter as "<group>/<key>" (groups ht, thermostat, radiator, fan, heater,
-  /// lt, air, numerics) = config/cooling.yaml.
+  /// lt, air, numerics, warm_start) = config/cooling.yaml.
   void declare(ParamSet& ps);
   /// Cross-field checks (ordering of temperatures, feasible rated radiator points). Throws
   /// InputError(file, key).

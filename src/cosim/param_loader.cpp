@@ -85,6 +85,14 @@ double scenarioAmbient_K(const ros::NodeHandle& nh) {
   return units::celsiusToK(ambient_c);
 }
 
+bool scenarioWarmStart(const ros::NodeHandle& nh) {
+  std::string start = "cold";
+  nh.param<std::string>("/scenario/start", start, "cold");
+  if (start != "cold" && start != "warm")
+    throw InputError("scenario (launch argument start)", "start", "'" + start + "' is not a start: cold | warm");
+  return start == "warm";
+}
+
 double scenarioAmbientPressure_Pa(const ros::NodeHandle& nh) {
   double p_Pa = units::kStandardAtmosphere_Pa;
   nh.param("/scenario/ambient_pressure_pa", p_Pa, p_Pa);

@@ -33,6 +33,10 @@ double scenarioAmbient_K(const ros::NodeHandle& nh);
 /// atmosphere): the one ambient pressure of a run (air density, intake, tailpipe, radiator air);
 /// outside [5e4, 1.2e5] Pa: InputError.
 double scenarioAmbientPressure_Pa(const ros::NodeHandle& nh);
+/// /scenario/start (launch argument start): "cold" (default: every thermal state at ambient) or
+/// "warm" (each participant at the warm state of its config's warm_start/ keys: a bus mid-shift);
+/// true for warm. Any other value: InputError naming the launch argument.
+bool scenarioWarmStart(const ros::NodeHandle& nh);
 
 std::string resolvePackagePath(const ros::NodeHandle& nh, const std::string& path);
 

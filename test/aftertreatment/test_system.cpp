@@ -247,6 +247,32 @@ TEST(Aftertreatment, AWarmSystemWithoutFlowCoolsThroughItsCanOnly) {
   EXPECT_EQ(a.outputs().tailpipe_nox_kg, 0.0);
 }
 
+TEST(Aftertreatment, AWarmStartHasItsBricksAndNh3StoreAtTheStatedLevel) {
+  // start:=warm: every brick at warm_start/brick_K, the SCR's NH3 store at nh3_fill_of_target x
+  // the dosing's storage target (storageTarget_mol at that temperature: an independent sum of
+  // equilibrium coverages), balances counting from there; lit off within the light-off filter
+  // time at the first NOx-carrying flow.
+  const AtsParams p = test::loadParams();
+  Aftertreatment ats(p);
+  ats.resetWarm(p.warm_brick_T_K, p.warm_nh3_fill);
+  for (int b = 0; b < kNumBricks; ++b)
+    for (int i = 0; i < ats.brick(b).slices(); ++i) ASSERT_EQ(ats.brick(b).T(i), p.warm_brick_T_K);
+  const Brick& scr = ats.brick(kSCR);
+  const double c_ref = p.dosing_ref_nh3_ppm * 1e-6 * units::kStandardAtmosphere_Pa / (kRu * p.warm_brick_T_K);
+  const double target = scr.slices() * ats.scr().equilibriumCoverage(p.warm_brick_T_K, c_ref) *
+                        p.scr_site_density_mol_m3 * scr.sliceVolume();
+  EXPECT_GT(target, 0.0);
+  EXPECT_NEAR(ats.outputs().nh3_stored_mol, p.warm_nh3_fill * target, 1e-12 * target);
+  EXPECT_NEAR(ats.scr().storedMol(), p.warm_nh3_fill * target, 1e-12 * target);
+  EXPECT_EQ(ats.energy().stored_change_J, 0.0);
+  EXPECT_EQ(ats.nitrogen().nh3_stored_change_mol, 0.0);
+  double t = 0.0;
+  for (; t < 60.0 && !ats.outputs().light_off; t += 0.1) ats.step(0.1, transient(t, 298.15));
+  EXPECT_TRUE(ats.outputs().light_off);
+  EXPECT_LE(t, 4.0 * p.lightoff_filter_s);
+  EXPECT_LT(std::abs(ats.energy().residual_J()), 1e-6 * ats.energy().enthalpy_in_J);
+}
+
 TEST(Aftertreatment, NonPhysicalInputStopsNamingTheQuantity) {
   Aftertreatment ats(test::loadParams());
   AtsInputs in;

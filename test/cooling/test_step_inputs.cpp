@@ -135,3 +135,36 @@ TEST(CoolingModel, AWarmSystemWithAStandingPumpLosesNoHeatThroughTheRadiator) {
   EXPECT_GT(m.outputs().surface_loss_W, 0.0);
   EXPECT_NEAR(m.outputs().energy_residual_J, E0, 1e-6 * m.outputs().engine_heat_J);
 }
+
+TEST(CoolingModel, AWarmStartHoldsItsStateAndCountsFromIt) {
+  // start:=warm: the states as given, warm-up already done (coolant at the thermostat's opening),
+  // the heater valve open, nothing stored or booked yet; with no heat and no flow the first step
+  // moves only by the internal exchange (metal -> coolant), the balance closed.
+  const CoolingParams p = yamlParams();
+  CoolingModel m(p);
+  const double Ta = celsiusToK(0.0);
+  const auto& w = p.warm_start;
+  m.reset(Ta, w.metal_K, w.coolant_ht_K, Ta + w.coolant_lt_above_ambient_K);
+  const CoolingOutputs& o = m.outputs();
+  EXPECT_EQ(o.metal_T_K, w.metal_K);
+  EXPECT_EQ(o.coolant_ht_T_K, w.coolant_ht_K);
+  EXPECT_EQ(o.coolant_lt_T_K, Ta + w.coolant_lt_above_ambient_K);
+  EXPECT_GE(w.coolant_ht_K, p.thermostat.opening_start_K);  // the shipped warm state is warm
+  EXPECT_EQ(o.warmup_time_s, 0.0);
+  EXPECT_EQ(o.stored_change_J, 0.0);
+  CoolingInputs in;
+  in.ambient_T_K = Ta;
+  in.engine_heat_W = 15e3;
+  in.pump_speed_rad_s = 70.0;
+  m.step(0.1, in);
+  EXPECT_GT(m.outputs().heater_heat_W, 0.0);  // 0 degC: the cabin draws at once
+  EXPECT_NEAR(m.outputs().energy_residual_J, 0.0, 1e-6 * 15e3 * 0.1);
+  // a cold reset is the warm reset at ambient
+  CoolingModel c(p), d(p);
+  c.reset(Ta);
+  d.reset(Ta, Ta, Ta, Ta);
+  c.step(0.1, in);
+  d.step(0.1, in);
+  EXPECT_EQ(c.outputs().coolant_ht_T_K, d.outputs().coolant_ht_T_K);
+  EXPECT_EQ(c.outputs().metal_T_K, d.outputs().metal_T_K);
+}

@@ -5,8 +5,9 @@ nodes and nodelets give bit-identical bags; the torque chain vehicle -> EMS -> e
 macro-step delay (Gauss-Seidel groups); the e-machine never exceeds its live (derated) limits and
 the EMS never boosts or stops the engine while the engine/ATS warm up; the electric path (battery
 terminal = e-machine DC + DC/DC) and the battery and e-machine balances close; the LT circuit is
-fed by the e-machine's heat; with the warm-up thresholds lowered (a config copy) the engine
-stops at standstill, is restarted by the e-machine and the bus still serves its stops."""
+fed by the e-machine's heat; from a warm start (start:=warm) the engine stops at standstill, is
+restarted by the e-machine, the bus still serves its stops, the one-box cools without flow and
+doses nothing, and nodes = nodelets bit for bit over those warm engine stops."""
 import json
 import os
 import shutil
@@ -52,25 +53,21 @@ class Hybrid(unittest.TestCase):
             out = os.path.join(cls.tmp, name)
             st = run_util.run_launch(LAUNCH, out, mode=mode, until=UNTIL, record_period=0, timeout=10.0)
             cls.runs[name] = (out, st)
-        # warm: the EMS's warm-up thresholds at 0 degC so that stop-start and boost act at once
-        cfg = os.path.join(cls.tmp, "config")
-        shutil.copytree(os.path.join(REPO, "config"), cfg, ignore=shutil.ignore_patterns("data"))
-        os.symlink(os.path.join(REPO, "config", "data"), os.path.join(cfg, "data"))
-        p = os.path.join(cfg, "ems.yaml")
-        with open(p) as f:
-            t = f.read()
-        t = t.replace("coolant_warm_K: 343.15", "coolant_warm_K: 273.15").replace("scr_warm_K: 473.15", "scr_warm_K: 273.15")
-        with open(p, "w") as f:
-            f.write(t)
-        out = os.path.join(cls.tmp, "warm")
-        cls.warm = (out, run_util.run_launch(LAUNCH, out, mode="nodelets", until=WARM_UNTIL, config=cfg, timeout=10.0))
+        # warm start (start:=warm, a bus mid-shift): stop-start and boost act from the first stop;
+        # in both modes, so that nodes = nodelets is checked over warm engine stops too
+        cls.warm = {}
+        for mode in ("nodes", "nodelets"):
+            out = os.path.join(cls.tmp, "warm_" + mode)
+            cls.warm[mode] = (out, run_util.run_launch(LAUNCH, out, mode=mode, until=WARM_UNTIL, start="warm",
+                                                       timeout=10.0))
 
     def test_runs_complete_and_modes_bit_identical(self):
-        for name, (out, st) in list(self.runs.items()) + [("warm", self.warm)]:
+        for name, (out, st) in list(self.runs.items()) + [("warm_" + m, r) for m, r in self.warm.items()]:
             self.assertEqual(st["status"], "ok", (name, st))
-        a = run_util.bag_messages(os.path.join(self.runs["nodes"][0], "run.bag"))
-        b = run_util.bag_messages(os.path.join(self.runs["nodelets"][0], "run.bag"))
-        self.assertEqual(a, b)
+        for runs in (self.runs, self.warm):
+            a = run_util.bag_messages(os.path.join(runs["nodes"][0], "run.bag"))
+            b = run_util.bag_messages(os.path.join(runs["nodelets"][0], "run.bag"))
+            self.assertEqual(a, b)
 
     def test_torque_chain_has_no_macro_step_delay(self):
         """Groups [vehicle, ...], [ems], [engine, emachine], [battery]: the e-machine and the
@@ -138,22 +135,38 @@ class Hybrid(unittest.TestCase):
         self.assertGreater(max(c.lt_heat_w for c in d["/cooling/state"].values()), 0.0)
 
     def test_stop_start_when_warm(self):
-        out, st = self.warm
+        out, st = self.warm["nodelets"]
         self.assertEqual(st["status"], "ok", st)
         s = summarise(out)
+        self.assertEqual(s["start"], "warm")
+        self.assertEqual(s["warmup_inhibit_s"], 0.0)  # warm from t = 0
         self.assertGreater(s["engine_off_s"], 5.0)
-        self.assertGreaterEqual(s["engine_starts"], 1)
+        self.assertGreaterEqual(s["engine_starts"], 2)  # warm engine stops, each restarted
         self.assertGreater(s["em_boost_kwh"], 0.0)
         self.assertEqual(s["stops_served"], s["stops_total"])
         self.assertEqual(s["battery_limited_s"], 0.0)
         self.assertLess(s["electric_path_closure"], 0.01)
-        d = by_stamp(os.path.join(out, "run.bag"), ["/ems/command", "/engine/state", "/vehicle/state"])
-        off = [t for t, c in d["/ems/command"].items() if c.mode == MODE_STOPPED]
+        self.assertLess(s["ats_balance_closure"], 1e-9)
+        self.assertLess(s["cooling_balance_closure"], 1e-9)
+        self.assertEqual(s["warnings"], [])
+        d = by_stamp(os.path.join(out, "run.bag"), ["/ems/command", "/engine/state", "/vehicle/state",
+                                                    "/engine/exhaust", "/aftertreatment/state"])
+        off = sorted(t for t, c in d["/ems/command"].items() if c.mode == MODE_STOPPED)
         self.assertGreater(len(off), 10)
         for t in off:  # the engine burns nothing while stopped, its crank comes to rest
             if t in d["/engine/state"]:
                 self.assertEqual(d["/engine/state"][t].fuel_mass_flow_kg_s, 0.0, t)
         self.assertLess(min(d["/vehicle/state"][t].engine_speed_rad_s for t in off if t in d["/vehicle/state"]), 1.0)
+        # the warm one-box at an engine stop: no flow, no dosing, the SCR cools, every input physical
+        ats = d["/aftertreatment/state"]
+        stopped = [t for t in off if t in ats and t - 10**9 in off and t - 10**9 in ats]
+        self.assertGreater(len(stopped), 5)
+        for t in stopped:
+            self.assertEqual(ats[t].urea_mass_flow_kg_s, 0.0, t)
+            self.assertLess(ats[t].scr_temperature_k, ats[t - 10**9].scr_temperature_k, t)
+            self.assertGreater(ats[t].scr_temperature_k, 273.15 + 25.0, t)
+        for t, x in d["/engine/exhaust"].items():
+            self.assertGreater(x.temperature_k, 250.0, t)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,10 @@ void AftertreatmentParticipant::configure() {
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
   ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);  // tailpipe pressure
   model_ = std::make_unique<Aftertreatment>(params_);
-  model_->reset(ambient_T_K_, ambient_p_Pa_);  // cold start at ambient
+  if (cosim::scenarioWarmStart(nh_))  // a one-box mid-shift: warm_start/ of the config
+    model_->resetWarm(params_.warm_brick_T_K, params_.warm_nh3_fill, ambient_p_Pa_);
+  else
+    model_->reset(ambient_T_K_, ambient_p_Pa_);  // cold start at ambient
   inputs_.reset();
   exhaust_ = &addInput<hybrid_bus_twin::ExhaustState>("/engine/exhaust");
   vehicle_ = &addInput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");

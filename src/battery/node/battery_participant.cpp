@@ -17,7 +17,10 @@ void BatteryParticipant::configure() {
   p.cell.table_file = cosim::resolvePackagePath(nh_, p.cell.table_file);
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
   model_ = std::make_unique<BatteryModel>(p, configFile());
-  model_->reset(ambient_T_K_);  // cold start: cells at ambient, SOC = pack/initial_soc
+  if (cosim::scenarioWarmStart(nh_))  // mid-shift: cells above the air (warm_start/), SOC = pack/initial_soc
+    model_->reset(ambient_T_K_ + p.thermal.warm_cell_above_ambient_K);
+  else
+    model_->reset(ambient_T_K_);  // cold start: cells at ambient, SOC = pack/initial_soc
   emachine_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
   vehicle_ = &addInput<hybrid_bus_twin::VehicleState>("/vehicle/state");
   state_pub_ = addOutput<hybrid_bus_twin::BatteryState>("/battery/state");

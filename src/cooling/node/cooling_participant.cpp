@@ -17,7 +17,11 @@ void CoolingParticipant::configure() {
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
   ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);
   model_ = std::make_unique<CoolingModel>(p, configFile());
-  model_->reset(ambient_T_K_);  // cold start: metal, HT and LT coolant at ambient
+  if (cosim::scenarioWarmStart(nh_))  // a bus mid-shift: warm_start/ of config/cooling.yaml
+    model_->reset(ambient_T_K_, p.warm_start.metal_K, p.warm_start.coolant_ht_K,
+                  ambient_T_K_ + p.warm_start.coolant_lt_above_ambient_K);
+  else
+    model_->reset(ambient_T_K_);  // cold start: metal, HT and LT coolant at ambient
   last_in_.ambient_T_K = ambient_T_K_;
   last_in_.ambient_p_Pa = ambient_p_Pa_;
   heat_ = &addInput<hybrid_bus_twin::EngineHeat>("/engine/heat");

@@ -1,0 +1,123 @@
+#!/usr/bin/python3
+"""The product's scenarios run to the end: baseline_urban and hybrid_urban with the map engine,
+as nodelets, the whole VECTO Urban mission at 0, 25 and 40 degC (scripts/mission_reference.py:
+MISSIONS), two at a time. Each asserts the mission invariants against what is independent of the
+run: the run ended "end of mission" at the cycle's last second; 121/121 stops served; the
+distance the cycle file gives; every balance of the summary closed (closure < 1e-9); no warning
+at 25 and 40 degC, and at 0 degC only the stored ones (the SCR falls below light-off in the slow
+urban stretch at 0 degC, with or without stop-start). The hybrid also: the engine stopped and
+was restarted by the e-machine, SOC stayed inside the battery's window, and its SOC-corrected
+fuel is below the baseline's at the same ambient. Finally each summary equals the stored one
+(test/scenario/reference/missions) within mission_reference.REL_TOL."""
+import os
+import shutil
+import sys
+import tempfile
+import unittest
+
+import yaml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "scripts"))
+import mission_reference as mr  # noqa: E402
+
+CLOSURE_BOUND = 1e-9
+STOP_POSITION_TOL_KM = 0.01  # a stop is served within metres of its position (stop_service/)
+
+
+def cycle_end(path):
+    """(last distance [m], number of stops) of a VECTO .vdri distance-based cycle: the columns
+    <s>,<v>,<grad>,<stop>; a stop is a row with a stop time > 0."""
+    s_last, stops = 0.0, 0
+    with open(path) as f:
+        for line in f:
+            parts = [p.strip() for p in line.split(",")]
+            if len(parts) < 4 or not parts[0] or parts[0].startswith("<") or parts[0].startswith("#"):
+                continue
+            s_last = float(parts[0])
+            stops += float(parts[3]) > 0.0
+    return s_last, stops
+
+
+def config(name):
+    with open(os.path.join(REPO, "config", name)) as f:
+        return yaml.safe_load(f)
+
+
+class Missions(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="hbt_missions_")
+        cls.results = mr.run_all(mr.MISSIONS, cls.tmp, jobs=2)
+        cls.distance_m, cls.stops = cycle_end(
+            os.path.join(REPO, "config", "data", "cycles", "vecto", "Urban.vdri"))
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def each(self):
+        """(name, scenario, ambient, summary) of every mission, failing on one that did not end."""
+        for scenario, ambient in mr.MISSIONS:
+            n = mr.name(scenario, ambient)
+            out, st, summ = self.results[n]
+            self.assertEqual(st.get("status"), "ok", "%s: %s" % (n, st.get("message")))
+            self.assertIsNotNone(summ, n)
+            yield n, scenario, ambient, summ
+
+    def test_every_mission_runs_to_its_end(self):
+        for n, _, _, s in self.each():
+            st = self.results[n][1]
+            self.assertEqual(st["message"], "end of mission", n)
+            self.assertGreater(s["sim_time_s"], 8000.0, n)
+
+    def test_every_stop_served_over_the_cycle_distance(self):
+        self.assertEqual(self.stops, 121)  # the Urban cycle file itself
+        for n, _, _, s in self.each():
+            self.assertEqual(s["stops_total"], self.stops, n)
+            self.assertEqual(s["stops_served"], self.stops, n)
+            self.assertAlmostEqual(s["distance_km"], self.distance_m / 1e3, delta=STOP_POSITION_TOL_KM, msg=n)
+
+    def test_every_balance_closes(self):
+        for n, _, _, s in self.each():
+            closures = {k: v for k, v in s.items() if k.endswith("_closure")}
+            self.assertGreaterEqual(len(closures), 3, n)  # ledger, cooling, aftertreatment (+ hybrid's)
+            for k, v in closures.items():
+                self.assertLess(abs(v), CLOSURE_BOUND, "%s: %s = %g" % (n, k, v))
+
+    def test_no_warning_but_the_stored_cold_scr(self):
+        for n, scenario, ambient, s in self.each():
+            got = [(w["node"], w["warning"]) for w in s["warnings"]]
+            if ambient > 0:
+                self.assertEqual(got, [], n)
+            else:
+                self.assertEqual(got, [(w["node"], w["warning"]) for w in mr.read_reference(scenario, ambient)["warnings"]], n)
+                self.assertTrue(all(w == ("aftertreatment", "ats_below_light_off") for w in got), (n, got))
+
+    def test_hybrid_stops_and_restarts_its_engine_within_its_soc_window(self):
+        limits = config("battery.yaml")["limits"]  # the battery's usable SOC window
+        for n, scenario, _, s in self.each():
+            if scenario != "hybrid_urban":
+                continue
+            self.assertGreater(s["engine_starts"], 10, n)  # restarted by the e-machine
+            self.assertGreater(s["engine_off_s"], 300.0, n)
+            self.assertGreater(s["cranking_s"], 0.0, n)
+            self.assertGreaterEqual(s["soc_min"], limits["soc_min"], n)
+            self.assertLessEqual(s["soc_max"], limits["soc_max"], n)
+
+    def test_hybrid_corrected_fuel_below_the_baseline_at_each_ambient(self):
+        by = {(sc, a): s for _, sc, a, s in self.each()}
+        for ambient in mr.AMBIENTS_C:
+            base, hyb = by[("baseline_urban", ambient)], by[("hybrid_urban", ambient)]
+            self.assertLess(hyb["fuel_soc_corrected_kg"], base["fuel_kg"], ambient)
+
+    def test_summaries_equal_the_stored_ones(self):
+        for n, scenario, ambient, s in self.each():
+            diff = mr.differences(mr.read_reference(scenario, ambient), s)
+            self.assertEqual(diff, [], "%s differs from %s (scripts/twin references --update regenerates "
+                                       "it on purpose): %s" % (n, mr.reference_path(scenario, ambient), diff))
+
+
+if __name__ == "__main__":
+    unittest.main()
