@@ -9,6 +9,7 @@
 #include "common/units.hpp"
 #include "common/yaml_params.hpp"
 #include "cooling/cooling_model.hpp"
+#include "support.hpp"
 #include "../common/param_checks.hpp"
 
 using namespace hbt;
@@ -19,14 +20,7 @@ using hbt::testing::expectInputError;
 
 namespace {
 
-CoolingParams yamlParams() {
-  CoolingParams p;
-  ParamSet ps;
-  p.declare(ps);
-  // cosim/ keys (the node's macro step) belong to the participant base class, as in the node
-  applyParams(ps, readYamlParams("config/cooling.yaml"), {"cosim/"});
-  return p;
-}
+using test::yamlParams;
 
 // Textbook formula written out independently of the library (Incropera Table 11.3).
 double epsHand(double ntu, double cr) {

@@ -7,6 +7,7 @@
 #include "common/units.hpp"
 #include "common/yaml_params.hpp"
 #include "cooling/cooling_model.hpp"
+#include "support.hpp"
 #include "cooling/step_inputs.hpp"
 
 using namespace hbt;
@@ -35,13 +36,7 @@ StepInputs primed(Engine& e) {
   return si;
 }
 
-CoolingParams yamlParams() {
-  CoolingParams p;
-  ParamSet ps;
-  p.declare(ps);
-  applyParams(ps, readYamlParams("config/cooling.yaml"), {"cosim/"});
-  return p;
-}
+using test::yamlParams;
 
 }  // namespace
 

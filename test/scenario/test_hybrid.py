@@ -36,9 +36,10 @@ def by_stamp(bag, topics):
     return out
 
 
-def summarise(out):
+def summarise(out, *args):
+    """summary.json of a run, with its launch arguments (name:=value) as `twin run` passes them."""
     r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"), out,
-                        "--scenario", "hybrid_urban"], capture_output=True, text=True)
+                        "--scenario", "hybrid_urban"] + list(args), capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     with open(os.path.join(out, "summary.json")) as f:
         return json.load(f)
@@ -137,7 +138,7 @@ class Hybrid(unittest.TestCase):
     def test_stop_start_when_warm(self):
         out, st = self.warm["nodelets"]
         self.assertEqual(st["status"], "ok", st)
-        s = summarise(out)
+        s = summarise(out, "start:=warm")
         self.assertEqual(s["start"], "warm")
         self.assertEqual(s["warmup_inhibit_s"], 0.0)  # warm from t = 0
         self.assertGreater(s["engine_off_s"], 5.0)
