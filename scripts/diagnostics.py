@@ -18,9 +18,9 @@ def read_diagnostics(run_bag):
     path = os.path.join(os.path.dirname(os.path.abspath(run_bag)), DIAGNOSTICS_BAG)
     if not os.path.exists(path):
         return None
-    import rosbag
+    from bag_input import open_bag
     nodes = {}
-    with rosbag.Bag(path) as bag:
+    with open_bag(path) as bag:
         for _, msg, _ in bag.read_messages(topics=["/diagnostics"]):
             for s in msg.status:
                 values = {kv.key: kv.value for kv in s.values}

@@ -137,6 +137,17 @@ def check_remote(scenario, given):
                      % (n, scenario, arch, given.get("thermal", "true")))
 
 
+def check_architecture(scenario, given):
+    """A scenario file is one bus: an architecture:= that contradicts it is refused (the summary,
+    the sweep tables and the reports name the run by its scenario), one that repeats it is fine."""
+    want = SCENARIO_ARCHITECTURE.get(scenario)
+    got = given.get("architecture")
+    if want is not None and got is not None and got != want:
+        other = [s for s, a in SCENARIO_ARCHITECTURE.items() if a == got]
+        sys.exit("twin: argument 'architecture': %s is the %s bus; architecture:=%s contradicts it%s"
+                 % (scenario, want, got, " (run %s)" % other[0] if other else ""))
+
+
 def check_yaml_files(folder):
     """Every YAML of the config folder (and its aux/ and gearbox/ sets) parses and is not empty, before
     roslaunch reads them (its errors name no file; an empty file loads nothing, silently)."""
@@ -181,6 +192,7 @@ def main():
             out.append("%s:=%s" % (name, given[name]))
         except ValueError as e:
             sys.exit("twin: argument '%s': %s" % (name, e))
+    check_architecture(scenario, given)
     check_remote(scenario, given)
     check_yaml_files(config or os.path.join(repo, "config"))
     print("\n".join(out))

@@ -28,6 +28,7 @@ import ledger  # noqa: E402
 import thermal  # noqa: E402
 import hybrid  # noqa: E402
 from twin_units import DIESEL_DENSITY_KG_L  # noqa: E402
+from bag_input import BagError, open_bag  # noqa: E402
 
 J_PER_KWH = 3.6e6
 
@@ -47,9 +48,8 @@ def store_run_info(bag_path, info):
 
 
 def read_run_info(bag_path):
-    import rosbag
     info = None
-    with rosbag.Bag(bag_path) as bag:
+    with open_bag(bag_path) as bag:
         for _, msg, _ in bag.read_messages(topics=[RUN_INFO_TOPIC]):
             info = json.loads(msg.data)
     if info is None:
@@ -60,9 +60,8 @@ def read_run_info(bag_path):
 
 def read_bag(path):
     """{topic: {field: np.array}} with 't' = header.stamp [s]; numeric fields only."""
-    import rosbag
     data = {}
-    with rosbag.Bag(path) as bag:
+    with open_bag(path) as bag:
         for topic, msg, _ in bag.read_messages():
             if topic == RUN_INFO_TOPIC:
                 continue
@@ -310,10 +309,12 @@ def main():
     ap.add_argument("args", nargs="*", help="launch arguments name:=value")
     a = ap.parse_intermixed_args()
     if a.bag:
-        if not os.path.exists(a.bag):
-            sys.exit("twin: no such bag: %s" % a.bag)
         out = a.out or os.path.dirname(os.path.abspath(a.bag))
-        status, s = report_from_bag(a.bag, out, a.baseline)
+        try:
+            status, s = report_from_bag(a.bag, out, a.baseline)
+        except BagError as e:
+            print("twin: report: %s" % e, file=sys.stderr)
+            return 2
         print("twin: report of %s written to %s" % (a.bag, out))
         return 0
     if not a.out or not a.scenario:

@@ -48,11 +48,11 @@ def positive_number(name, text):
 
 def read_bag(path):
     """(duration [s], road rows [(distance_m, altitude_m)], run_info dict or None)."""
-    import rosbag
+    from bag_input import BagError, open_bag
     try:
-        bag = rosbag.Bag(path)
-    except Exception as e:  # rosbag raises several types for unreadable files
-        fail("cannot read %s as a bag: %s" % (path, e))
+        bag = open_bag(path)
+    except BagError as e:
+        fail(str(e))
     with bag:
         topics = bag.get_type_and_topic_info().topics
         if "/vehicle/state" not in topics:

@@ -93,6 +93,10 @@ class Spec:
         self.fixed = self._mapping(d, "fixed")
         self.vary = self._mapping(d, "vary")
         self.config = self._mapping(d, "config")
+        for key in ("vary", "config"):  # present but empty: an axis forgotten, not a one-run sweep
+            if key in d and not d[key]:
+                self.err(key, "empty: give at least one axis (%s) or leave the key out"
+                         % ("vary/<argument>: [values]" if key == "vary" else "config/<file>.yaml: {key: [values]}"))
         self.slurm = self._slurm(self._mapping(d, "slurm"))
         self.cli = set()
         for a in cli_args:  # name:=value on the command line: fixed arguments, override the spec

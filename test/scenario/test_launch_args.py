@@ -10,8 +10,8 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 TOOL = os.path.join(REPO, "scripts", "launch_args.py")
 
 
-def check(*args):
-    r = subprocess.run(["/usr/bin/python3", TOOL, REPO, "baseline_urban", *args],
+def check(*args, scenario="baseline_urban"):
+    r = subprocess.run(["/usr/bin/python3", TOOL, REPO, scenario, *args],
                        capture_output=True, text=True)
     return r.returncode, r.stdout.split(), r.stderr
 
@@ -40,6 +40,17 @@ class LaunchArgs(unittest.TestCase):
         self.rejected("window_steps:=2.5", "not an integer")
         rc, out, _ = check("window_steps:=1e2")
         self.assertEqual((rc, out), (0, ["window_steps:=100"]))
+
+    def test_architecture_that_contradicts_the_scenario(self):
+        for scenario, arch, other in (("baseline_urban", "p1_48v", "hybrid_urban"),
+                                      ("hybrid_urban", "conventional", "baseline_urban")):
+            rc, _, err = check("architecture:=" + arch, scenario=scenario)
+            self.assertNotEqual(rc, 0, scenario)
+            self.assertIn("architecture", err)
+            self.assertIn("contradicts", err)
+            self.assertIn(other, err)  # what to run instead
+        rc, out, _ = check("architecture:=p1_48v", scenario="hybrid_urban")  # repeating it is fine
+        self.assertEqual((rc, out), (0, ["architecture:=p1_48v"]))
 
     def test_not_a_number(self):
         self.rejected("ambient:=warm", "not a number")

@@ -85,6 +85,11 @@ class Rejected(SpecCase):
                             "cells_in_parallel", os.path.join(REPO, "config", "battery.yaml"))
         self.assertEqual(msg.count("\n"), 0)  # one message for the key, not one per value
 
+    def test_an_empty_axis_is_an_error(self):
+        self.rejected(self.with_(vary={}), "vary", "empty")
+        self.rejected(self.with_(vary=None), "vary", "empty")
+        self.rejected(self.with_(config={}), "config", "empty")
+
     def test_wrong_types_and_groups(self):
         self.rejected(self.with_(config={"battery.yaml": {"pack/cells_in_parallel": [7.5]}}),
                       "battery.yaml:pack/cells_in_parallel", "integer (7)", "7.5")
