@@ -160,9 +160,13 @@ def check_yaml_files(folder):
             if not name.endswith(".yaml"):
                 continue
             path = os.path.join(d, name)
+            if not os.path.isfile(path):
+                sys.exit("twin: config file %s: %s, not a YAML file" % (path, "a folder" if os.path.isdir(path) else "not a regular file"))
             try:
                 with open(path, "rb") as f:
                     doc = yaml.safe_load(f.read().decode("utf-8"))
+            except OSError as e:
+                sys.exit("twin: config file %s: cannot be read: %s" % (path, e.strerror or e))
             except UnicodeDecodeError as e:
                 sys.exit("twin: config file %s: not UTF-8 text (byte %d): %s" % (path, e.start, e.reason))
             except yaml.YAMLError as e:

@@ -122,6 +122,13 @@ class LaunchArgs(unittest.TestCase):
             shutil.copy(os.path.join(REPO, "config", "cooling.yaml"), cfg)
             rc, _, err = check("config:=" + cfg)
             self.assertIn(os.path.join(cfg, "aux", "fan_only.yaml") + ": not valid YAML", err)
+            shutil.copy(os.path.join(REPO, "config", "aux", "fan_only.yaml"), os.path.join(cfg, "aux"))
+            os.remove(os.path.join(cfg, "battery.yaml"))
+            os.mkdir(os.path.join(cfg, "battery.yaml"))  # a folder where a config file belongs
+            rc, _, err = check("config:=" + cfg)
+            self.assertNotEqual(rc, 0)
+            self.assertNotIn("Traceback", err)
+            self.assertIn(os.path.join(cfg, "battery.yaml") + ": a folder", err)
         finally:
             shutil.rmtree(tmp)
 
