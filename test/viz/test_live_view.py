@@ -181,7 +181,7 @@ class LiveView(unittest.TestCase):
             self.assertIn(expect, r.stderr, args)
         r = subprocess.run([twin, "replay", text, "--no-rviz"], capture_output=True, text=True, timeout=60)
         self.assertEqual(r.returncode, 2, r.stderr)
-        self.assertIn("cannot read %s as a bag" % text, r.stderr)
+        self.assertIn("%s: not a ROS bag" % text, r.stderr)
 
 
 if __name__ == "__main__":
