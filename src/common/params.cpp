@@ -10,23 +10,22 @@
 namespace hbt {
 
 void ParamSet::add(const std::string& key, double& ref, const std::string& unit, double min,
-                   double max, const std::string& doc, bool optional) {
-  entries_.push_back({prefix_ + key, unit, doc, &ref, min, max, optional});
+                   double max, const std::string& doc) {
+  entries_.push_back({prefix_ + key, unit, doc, &ref, min, max});
 }
-void ParamSet::add(const std::string& key, bool& ref, const std::string& doc, bool optional) {
-  entries_.push_back({prefix_ + key, "-", doc, &ref, 0, 0, optional});
+void ParamSet::add(const std::string& key, bool& ref, const std::string& doc) {
+  entries_.push_back({prefix_ + key, "-", doc, &ref, 0, 0});
 }
-void ParamSet::add(const std::string& key, std::string& ref, const std::string& doc,
-                   bool optional) {
-  entries_.push_back({prefix_ + key, "-", doc, &ref, 0, 0, optional});
+void ParamSet::add(const std::string& key, std::string& ref, const std::string& doc) {
+  entries_.push_back({prefix_ + key, "-", doc, &ref, 0, 0});
 }
 void ParamSet::add(const std::string& key, std::vector<double>& ref, const std::string& unit,
-                   double min, double max, const std::string& doc, bool optional) {
-  entries_.push_back({prefix_ + key, unit, doc, &ref, min, max, optional});
+                   double min, double max, const std::string& doc) {
+  entries_.push_back({prefix_ + key, unit, doc, &ref, min, max});
 }
 void ParamSet::add(const std::string& key, int& ref, const std::string& unit, int min, int max,
-                   const std::string& doc, bool optional) {
-  entries_.push_back({prefix_ + key, unit, doc, &ref, double(min), double(max), optional});
+                   const std::string& doc) {
+  entries_.push_back({prefix_ + key, unit, doc, &ref, double(min), double(max)});
 }
 
 namespace {
@@ -68,6 +67,24 @@ std::string valueText(const ParamSet::Entry& e) {
 }
 }  // namespace
 
+void ParamSet::intendedDefault(const std::string& source) {
+  if (entries_.empty() || source.empty())
+    throw InputError("(parameter declaration)", entries_.empty() ? "" : entries_.back().key,
+                     "intendedDefault needs a key declared before it and a source");
+  entries_.back().default_source = source;
+}
+
+void requireKeys(const ParamSet& ps, const ParamSource& src, const std::vector<std::string>& set_elsewhere) {
+  for (const auto& e : ps.entries()) {
+    bool elsewhere = false;
+    for (const auto& p : set_elsewhere) elsewhere = elsewhere || e.key.rfind(p, 0) == 0;
+    if (!elsewhere && e.default_source.empty() && !src.values.count(e.key))
+      throw InputError(src.file, e.key,
+                       "required key missing (" + e.doc + (e.unit.empty() || e.unit == "-" ? "" : ", " + e.unit) +
+                           "): a model's built-in value is never used in its place");
+  }
+}
+
 ParamCapture::ParamCapture() : outer_(t_capture) { t_capture = this; }
 ParamCapture::~ParamCapture() { t_capture = outer_; }
 
@@ -79,8 +96,7 @@ void applyParams(const ParamSet& ps, const ParamSource& src,
     known.insert(e.key);
     const auto it = src.values.find(e.key);
     if (it == src.values.end()) {
-      if (!e.optional) throw InputError(file, e.key, "required key is missing");
-      continue;
+      continue;  // the field keeps its value (requireKeys: only where the file may omit it)
     }
     const ParamValue& v = it->second;
     if (auto* pd = std::get_if<double*>(&e.ref)) {
@@ -129,7 +145,8 @@ std::string describeParams(const ParamSet& ps) {
     if (auto* pi = std::get_if<int*>(&e.ref)) os << " = " << **pi;
     if (auto* pb = std::get_if<bool*>(&e.ref)) os << " = " << (**pb ? "true" : "false");
     if (auto* pstr = std::get_if<std::string*>(&e.ref)) os << " = " << **pstr;
-    os << "  # " << e.doc << (e.optional ? "" : " (required)") << "\n";
+    os << "  # " << e.doc
+       << (e.default_source.empty() ? " (required)" : " (intended default: " + e.default_source + ")") << "\n";
   }
   return os.str();
 }

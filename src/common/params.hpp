@@ -7,9 +7,17 @@
 //   }
 //
 // and a ParamSource (a flat key -> value map, filled from rosparam by the node or directly by a
-// test) is applied with hbt::applyParams(). Errors name the source file and the key: a missing
-// required key, a value of the wrong type, NaN/inf, a value out of range, and any key present
-// in the source that the model does not know (typos must not be ignored silently).
+// test) is applied with hbt::applyParams(). Errors name the source file and the key: a value of
+// the wrong type, NaN/inf, a value out of range, and any key present in the source that the
+// model does not know (typos must not be ignored silently).
+//
+// Required keys: every key describes the real bus and must be in its file when the product
+// reads it (hbt::requireKeys, called by every configuration path of the nodes): a key removed
+// from a file is an error naming file and key, never a silent built-in default. A default that
+// is right for every bus is declared as such, with its source, right after its add():
+//     ps.add("max_steps", max_steps, "-", 10, 1e6, "CVODE steps per model step");
+//     ps.intendedDefault("CVODE's own default order of magnitude");
+// Tests may apply partial sources (applyParams alone does not require keys).
 #pragma once
 #include <map>
 #include <string>
@@ -29,15 +37,19 @@ struct ParamSource {
 
 class ParamSet {
  public:
-  /// Required unless `optional` (then the field's current value is the default).
+  /// Declares a key (required in files: requireKeys) bound to `ref`, whose value is its default.
   void add(const std::string& key, double& ref, const std::string& unit, double min, double max,
-           const std::string& doc, bool optional = true);
-  void add(const std::string& key, bool& ref, const std::string& doc, bool optional = true);
-  void add(const std::string& key, std::string& ref, const std::string& doc, bool optional = true);
+           const std::string& doc);
+  void add(const std::string& key, bool& ref, const std::string& doc);
+  void add(const std::string& key, std::string& ref, const std::string& doc);
   void add(const std::string& key, std::vector<double>& ref, const std::string& unit, double min,
-           double max, const std::string& doc, bool optional = true);
+           double max, const std::string& doc);
   void add(const std::string& key, int& ref, const std::string& unit, int min, int max,
-           const std::string& doc, bool optional = true);
+           const std::string& doc);
+
+  /// Marks the key added last as an intended default (its current value is right for every bus):
+  /// requireKeys lets a file leave it out. `source` says why (cited in describeParams).
+  void intendedDefault(const std::string& source);
 
   /// Prefix prepended to keys added afterwards ("vehicle/" ...); "" to clear.
   void setPrefix(const std::string& prefix) { prefix_ = prefix; }
@@ -46,7 +58,7 @@ class ParamSet {
     std::string key, unit, doc;
     std::variant<double*, bool*, std::string*, std::vector<double>*, int*> ref;
     double min = 0.0, max = 0.0;
-    bool optional = true;
+    std::string default_source;  // non-empty: an intended default (intendedDefault), else required
   };
   const std::vector<Entry>& entries() const { return entries_; }
 
@@ -59,6 +71,11 @@ class ParamSet {
 /// are not reported as unknown (e.g. parameters consumed by the node itself). Throws InputError.
 void applyParams(const ParamSet& ps, const ParamSource& src,
                  const std::vector<std::string>& ignore_prefixes = {});
+
+/// Throws InputError(src.file, key) for the first declared key that `src` lacks and that is not
+/// an intended default: the product's configuration paths call it before applyParams. Keys
+/// starting with one of `set_elsewhere` come from another file or the scenario (required there).
+void requireKeys(const ParamSet& ps, const ParamSource& src, const std::vector<std::string>& set_elsewhere = {});
 
 /// One line per parameter: "key [unit] = value  # doc" (for --help output and reports).
 std::string describeParams(const ParamSet& ps);

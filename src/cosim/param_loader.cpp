@@ -60,7 +60,7 @@ ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
 }
 
 void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::string& file,
-                    std::vector<std::string> ignore_prefixes) {
+                    std::vector<std::string> ignore_prefixes, const std::vector<std::string>& set_elsewhere) {
   ignore_prefixes.push_back("config_file");
   ignore_prefixes.push_back("loops/");  // engine loop switches (src/engine/node/engine_ports.hpp), not model keys
   ignore_prefixes.push_back("cosim/");  // protocol keys read by the Participant base class
@@ -74,6 +74,7 @@ void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::s
   // an empty (or unloaded) file would silently run the model on its built-in defaults
   if (model_keys == 0 && !ps.entries().empty())
     throw InputError(file, "", "sets no parameter of this model (empty file, or not loaded)");
+  requireKeys(ps, src, set_elsewhere);
   applyParams(ps, src, ignore_prefixes);
 }
 

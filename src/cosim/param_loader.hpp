@@ -19,10 +19,13 @@ ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
 /// Applies the private parameters of a participant (`pnh`) to a model's ParamSet: the one call a
 /// node makes. `file` = the YAML they came from; the node's own key `config_file`, the protocol
 /// keys `cosim/...` (e.g. cosim/macro_step_s, read by cosim::Participant) and any key starting
-/// with one of `ignore_prefixes` are not reported as unknown. Throws hbt::InputError, also when
-/// the namespace holds no model key at all (an empty or unloaded file: defaults, unseen).
+/// with one of `ignore_prefixes` are not reported as unknown. Every declared key must be there
+/// (hbt::requireKeys) but an intended default and those under `set_elsewhere` (another file's or
+/// the scenario's). Throws hbt::InputError, also when the namespace holds no model key at all
+/// (an empty or unloaded file: defaults, unseen).
 void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::string& file,
-                    std::vector<std::string> ignore_prefixes = {});
+                    std::vector<std::string> ignore_prefixes = {},
+                    const std::vector<std::string>& set_elsewhere = {});
 
 /// Resolves a data path given in a config file: absolute paths stay, relative paths are taken
 /// against the package root (scenario parameter /scenario/package_dir).

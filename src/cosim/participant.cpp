@@ -152,7 +152,9 @@ void Participant::readDiagnosticsParams() {
   nh_.param<std::string>("/scenario/diagnostics_file", file, file);
   ParamSet ps;
   diag_params_.declare(ps);
-  applyParams(ps, loadParamSource(nh_, "/scenario/diagnostics", file));
+  const ParamSource src = loadParamSource(nh_, "/scenario/diagnostics", file);
+  requireKeys(ps, src);
+  applyParams(ps, src);
   diag_params_.validate(file);
   diag_.setPeriod(core::toNanos(diag_params_.period_s));
 }

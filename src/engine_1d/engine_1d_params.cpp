@@ -159,6 +159,7 @@ Engine1DParams Engine1DParams::load(const ParamSource& engine, const std::string
   {
     ParamSet ps;
     p.engine.declare(ps);
+    requireKeys(ps, engine);
     applyParams(ps, engine);
     p.engine_source = engine.file;
   }
@@ -168,6 +169,7 @@ Engine1DParams Engine1DParams::load(const ParamSource& engine, const std::string
     const ParamSource src = readYamlParams(resolvePath(folder, p.engine.cylinder_file));
     ParamSet ps;
     p.cylinder.declare(ps);
+    requireKeys(ps, src);
     applyParams(ps, src, {"cylinder_rig/"});
   }
   p.applyCalibration();
@@ -176,6 +178,7 @@ Engine1DParams Engine1DParams::load(const ParamSource& engine, const std::string
     const ParamSource src = readYamlParams(resolvePath(folder, p.engine.turbo_file));
     ParamSet ps;
     p.turbo.declare(ps, "turbo/");
+    requireKeys(ps, src);
     applyParams(ps, src);
     p.turbo.source = src.file;
   }
@@ -183,6 +186,7 @@ Engine1DParams Engine1DParams::load(const ParamSource& engine, const std::string
     const ParamSource src = readYamlParams(resolvePath(folder, p.engine.reference_file));
     ParamSet ps;
     p.reference.declare(ps);
+    requireKeys(ps, src);
     applyParams(ps, src);
   }
   p.validate();

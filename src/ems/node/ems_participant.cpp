@@ -24,7 +24,9 @@ void EmsParticipant::configure() {
   engine_map::MapEngineParams mp;
   ParamSet mps;
   mp.declare(mps);
-  applyParams(mps, readYamlParams(cosim::resolvePackagePath(nh_, engine_file)), {"cosim/"});
+  const ParamSource engine = readYamlParams(cosim::resolvePackagePath(nh_, engine_file));
+  requireKeys(mps, engine);
+  applyParams(mps, engine, {"cosim/"});
   fuel_ = std::make_unique<MapFuelModel>(std::make_unique<engine_map::MapEngine>(mp, pkg));
   bool supported = true;
   pnh_.param("stop_start_supported", supported, true);

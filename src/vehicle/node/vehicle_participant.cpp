@@ -41,20 +41,25 @@ void VehicleParticipant::configure() {
     ParamSet aps;                                    // so that errors name its file and key
     aps.setPrefix("aux/");
     p.aux.declare(aps);
-    applyParams(aps, readYamlParams(aux_file));
+    const ParamSource aux = readYamlParams(aux_file);
+    requireKeys(aps, aux);
+    applyParams(aps, aux);
   }
   std::string gearbox_file;
   if (pnh_.getParam("gearbox_config_file", gearbox_file)) {  // the gear loss set, likewise
     ParamSet gps;
     gps.setPrefix("gearbox/");
     p.gearbox.declare(gps);
-    applyParams(gps, readYamlParams(gearbox_file));
+    const ParamSource gearbox = readYamlParams(gearbox_file);
+    requireKeys(gps, gearbox);
+    applyParams(gps, gearbox);
   }
   ParamSet ps;
   p.declare(ps);
   cosim::applyRosParams(pnh_, ps, configFile(),
                         {"mission/", "mission_config_file", "aux_config_file", "gearbox_config_file", "em_config_file",
-                         "engine_config_file"});
+                         "engine_config_file"},
+                        {"aux/", "gearbox/"});  // their own files, required there (above)
   readEngineIdleSpeed(p);
   double payload_kg = p.chassis.payload_kg;
   nh_.param("/scenario/payload_kg", payload_kg, payload_kg);
@@ -68,7 +73,9 @@ void VehicleParticipant::configure() {
     emachine::EMachineParams ep;
     ParamSet eps;
     ep.declare(eps);
-    applyParams(eps, readYamlParams(em_file), {"cosim/"});
+    const ParamSource em = readYamlParams(em_file);
+    requireKeys(eps, em);
+    applyParams(eps, em, {"cosim/"});
     p.driveline.engine_inertia_kg_m2 += ep.data.crankInertia_kgm2();
   }
   p.validate(configFile());
@@ -83,7 +90,9 @@ void VehicleParticipant::configure() {
   mp.declare(mps);
   std::string mission_file;
   pnh_.param<std::string>("mission_config_file", mission_file, "config/mission.yaml");
-  applyParams(mps, cosim::loadParamSource(pnh_, "mission", mission_file), {"mission_config_file"});
+  const ParamSource mission = cosim::loadParamSource(pnh_, "mission", mission_file);
+  requireKeys(mps, mission);
+  applyParams(mps, mission, {"mission_config_file"});
   if (nh_.getParam("/scenario/cycle_file", cycle)) mp.cycle_file = cycle;
   mp.cycle_file = cosim::resolvePackagePath(nh_, mp.cycle_file);
   mp.accel_limits_file = cosim::resolvePackagePath(nh_, mp.accel_limits_file);
