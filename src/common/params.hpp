@@ -73,7 +73,8 @@ void applyParams(const ParamSet& ps, const ParamSource& src,
                  const std::vector<std::string>& ignore_prefixes = {});
 
 /// Throws InputError(src.file, key) for the first declared key that `src` lacks and that is not
-/// an intended default: the product's configuration paths call it before applyParams. Keys
+/// an intended default: the product's configuration paths call it after applyParams (which names a
+/// misspelt key as unknown first). Keys
 /// starting with one of `set_elsewhere` come from another file or the scenario (required there).
 void requireKeys(const ParamSet& ps, const ParamSource& src, const std::vector<std::string>& set_elsewhere = {});
 

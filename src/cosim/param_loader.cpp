@@ -74,8 +74,8 @@ void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::s
   // an empty (or unloaded) file would silently run the model on its built-in defaults
   if (model_keys == 0 && !ps.entries().empty())
     throw InputError(file, "", "sets no parameter of this model (empty file, or not loaded)");
-  requireKeys(ps, src, set_elsewhere);
   applyParams(ps, src, ignore_prefixes);
+  requireKeys(ps, src, set_elsewhere);  // after: a misspelt key is named as unknown first
 }
 
 double scenarioAmbient_K(const ros::NodeHandle& nh) {

@@ -159,8 +159,8 @@ Engine1DParams Engine1DParams::load(const ParamSource& engine, const std::string
   {
     ParamSet ps;
     p.engine.declare(ps);
-    requireKeys(ps, engine);
     applyParams(ps, engine);
+    requireKeys(ps, engine);  // after: a misspelt key is named as unknown first
     p.engine_source = engine.file;
   }
   const auto cut = engine_file.find_last_of('/');  // sub-files: beside the engine YAML
@@ -169,8 +169,8 @@ Engine1DParams Engine1DParams::load(const ParamSource& engine, const std::string
     const ParamSource src = readYamlParams(resolvePath(folder, p.engine.cylinder_file));
     ParamSet ps;
     p.cylinder.declare(ps);
-    requireKeys(ps, src);
     applyParams(ps, src, {"cylinder_rig/"});
+    requireKeys(ps, src);  // after: a misspelt key is named as unknown first
   }
   p.applyCalibration();
   p.cylinder.finalize(resolvePath(folder, p.engine.cylinder_file));
@@ -178,16 +178,16 @@ Engine1DParams Engine1DParams::load(const ParamSource& engine, const std::string
     const ParamSource src = readYamlParams(resolvePath(folder, p.engine.turbo_file));
     ParamSet ps;
     p.turbo.declare(ps, "turbo/");
-    requireKeys(ps, src);
     applyParams(ps, src);
+    requireKeys(ps, src);  // after: a misspelt key is named as unknown first
     p.turbo.source = src.file;
   }
   {
     const ParamSource src = readYamlParams(resolvePath(folder, p.engine.reference_file));
     ParamSet ps;
     p.reference.declare(ps);
-    requireKeys(ps, src);
     applyParams(ps, src);
+    requireKeys(ps, src);  // after: a misspelt key is named as unknown first
   }
   p.validate();
   return p;

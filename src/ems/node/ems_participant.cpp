@@ -25,8 +25,8 @@ void EmsParticipant::configure() {
   ParamSet mps;
   mp.declare(mps);
   const ParamSource engine = readYamlParams(cosim::resolvePackagePath(nh_, engine_file));
-  requireKeys(mps, engine);
   applyParams(mps, engine, {"cosim/"});
+  requireKeys(mps, engine);  // after: a misspelt key is named as unknown first
   fuel_ = std::make_unique<MapFuelModel>(std::make_unique<engine_map::MapEngine>(mp, pkg));
   bool supported = true;
   pnh_.param("stop_start_supported", supported, true);

@@ -42,8 +42,8 @@ void VehicleParticipant::configure() {
     aps.setPrefix("aux/");
     p.aux.declare(aps);
     const ParamSource aux = readYamlParams(aux_file);
-    requireKeys(aps, aux);
     applyParams(aps, aux);
+    requireKeys(aps, aux);  // after: a misspelt key is named as unknown first
   }
   std::string gearbox_file;
   if (pnh_.getParam("gearbox_config_file", gearbox_file)) {  // the gear loss set, likewise
@@ -51,8 +51,8 @@ void VehicleParticipant::configure() {
     gps.setPrefix("gearbox/");
     p.gearbox.declare(gps);
     const ParamSource gearbox = readYamlParams(gearbox_file);
-    requireKeys(gps, gearbox);
     applyParams(gps, gearbox);
+    requireKeys(gps, gearbox);  // after: a misspelt key is named as unknown first
   }
   ParamSet ps;
   p.declare(ps);
@@ -74,8 +74,8 @@ void VehicleParticipant::configure() {
     ParamSet eps;
     ep.declare(eps);
     const ParamSource em = readYamlParams(em_file);
-    requireKeys(eps, em);
     applyParams(eps, em, {"cosim/"});
+    requireKeys(eps, em);  // after: a misspelt key is named as unknown first
     p.driveline.engine_inertia_kg_m2 += ep.data.crankInertia_kgm2();
   }
   p.validate(configFile());
@@ -91,8 +91,8 @@ void VehicleParticipant::configure() {
   std::string mission_file;
   pnh_.param<std::string>("mission_config_file", mission_file, "config/mission.yaml");
   const ParamSource mission = cosim::loadParamSource(pnh_, "mission", mission_file);
-  requireKeys(mps, mission);
   applyParams(mps, mission, {"mission_config_file"});
+  requireKeys(mps, mission);  // after: a misspelt key is named as unknown first
   if (nh_.getParam("/scenario/cycle_file", cycle)) mp.cycle_file = cycle;
   mp.cycle_file = cosim::resolvePackagePath(nh_, mp.cycle_file);
   mp.accel_limits_file = cosim::resolvePackagePath(nh_, mp.accel_limits_file);
