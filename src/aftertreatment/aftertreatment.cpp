@@ -9,7 +9,7 @@
 namespace hbt::aftertreatment {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = units::kPi;
 constexpr double kDH_CO = 283.0e3;     // J/mol CO -> CO2
 constexpr double kDH_NO2 = 57.1e3;     // J/mol NO + 1/2 O2 -> NO2
 constexpr double kDS_NO2 = -73.2;      // J/(mol K)

@@ -8,7 +8,7 @@
 namespace hbt::aftertreatment {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = units::kPi;
 constexpr double kSigma = 5.670374e-8;  // Stefan-Boltzmann [W/(m^2 K^4)]
 }  // namespace
 

@@ -15,7 +15,7 @@
 
 namespace hbt::aftertreatment {
 
-constexpr double kRu = 8.314462618;       // J/(mol K)
+constexpr double kRu = units::kUniversalGas_J_molK;  // J/(mol K)
 constexpr double kAtm_Pa = units::kStandardAtmosphere_Pa;
 constexpr double kM_NO2 = 0.046006;       // kg/mol (NOx is reported as NO2)
 constexpr double kM_NH3 = 0.017031;

@@ -14,6 +14,9 @@ constexpr double kRadps_per_rpm = 2.0 * kPi / 60.0;
 constexpr double kRad_per_deg = kPi / 180.0;
 constexpr double kDeg_per_rad = 180.0 / kPi;
 constexpr double kJ_per_kWh = 3.6e6;
+// Molar gas constant [J/(mol K)] (CODATA 2018: R = N_A k, exact since the 2019 SI): the one value
+// of the cylinder's thermodynamics and the aftertreatment's gas.
+constexpr double kUniversalGas_J_molK = 8.314462618;
 constexpr double kGravity_m_s2 = 9.81;  // VECTO uses 9.81 m/s^2
 // Standard atmosphere at sea level [Pa] (ISO 2533:1975 / ICAO; = 1 atm): the ambient pressure
 // wherever a scenario or an input gives none (the engine's reset and its command fallback).

@@ -1,5 +1,7 @@
 #include "cylinder/combustion.hpp"
 
+#include "cylinder/thermo.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -34,7 +36,7 @@ double DoubleWiebe::end_deg() const {
 double hardenbergHaseDelayDeg(double p_Pa, double T_K, double cm, double cetane) {
   const double p_bar = std::max(p_Pa * 1e-5, 13.0);  // correlation singular at 12.4 bar
   const double EA = 618840.0 / (cetane + 25.0);
-  const double arg = EA * (1.0 / (8.314462618 * T_K) - 1.0 / 17190.0) *
+  const double arg = EA * (1.0 / (kRu * T_K) - 1.0 / 17190.0) *
                      std::pow(21.2 / (p_bar - 12.4), 0.63);
   return (0.36 + 0.22 * cm) * std::exp(arg);
 }

@@ -24,12 +24,14 @@
 #pragma once
 #include <array>
 
+#include "common/units.hpp"
+
 namespace hbt::cylinder {
 
 enum Species { kN2, kO2, kAr, kCO2, kH2O, kCO, kH2, kOH, kH, kO, kN, kNO, kFuel, kNumSpecies };
 enum Group { kAir = 0, kFuelVap = 1, kBurned = 2, kNumGroups = 3 };
 
-constexpr double kRu = 8.314462618;   // J/(mol K)
+constexpr double kRu = units::kUniversalGas_J_molK;  // J/(mol K)
 constexpr double kTref = 298.15;      // K
 constexpr double kPref = 1.0e5;       // Pa, standard pressure of the Gibbs data
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 
 namespace hbt::gasdyn {
 
@@ -43,7 +44,7 @@ double LiftProfileArea::effectiveArea(FlowDirection dir, double t) const {
   const double l = lift(t);
   if (l <= 0.0) return 0.0;
   const double cd = (dir == FlowDirection::Forward ? cd_f_ : cd_r_)(l / d_);
-  return n_ * 3.14159265358979323846 * d_ * l * (cd > 0.0 ? cd : 0.0);
+  return n_ * units::kPi * d_ * l * (cd > 0.0 ? cd : 0.0);
 }
 
 }  // namespace hbt::gasdyn

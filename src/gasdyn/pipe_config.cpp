@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 
 namespace hbt::gasdyn {
 
@@ -35,7 +36,7 @@ PipeGeometry PipeGeometry::build(const PipeConfig& c) {
       g.D_face[j] = c.diameter_left + s * (c.diameter_right - c.diameter_left);
     }
   }
-  const double pi = 3.14159265358979323846;
+  const double pi = units::kPi;
   g.A_face.resize(g.n + 1);
   for (int j = 0; j <= g.n; ++j) {
     if (!(g.D_face[j] > 0.0)) throw InputError(src, "diameter", "must be > 0 m");
