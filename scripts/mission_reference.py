@@ -45,6 +45,9 @@ ROUND_OFF_MARKERS = ("closure", "residual")
 # the run's wall time without progress before it is aborted [s]: generous, two runs share 2 cores
 RUN_TIMEOUT_S = 10.0
 
+sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
+import run_util  # noqa: E402  (the tests' launcher: its own master on a free port)
+
 
 def name(scenario, ambient_c):
     return "%s_%dC" % (scenario, ambient_c)
@@ -75,8 +78,6 @@ def summarise(scenario, ambient_c, out_dir):
 def run_mission(scenario, ambient_c, out_dir):
     """Runs one full mission as nodelets (run_util.run_launch: its own master) and summarises it;
     returns (status, summary or None)."""
-    sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-    import run_util
     launch = os.path.join(REPO, "launch", scenario + ".launch")
     st = run_util.run_launch(launch, out_dir, timeout_s=900, **launch_arguments(ambient_c))
     if st.get("status") != "ok":
@@ -86,15 +87,15 @@ def run_mission(scenario, ambient_c, out_dir):
 
 def run_all(missions, root, jobs=2):
     """Runs the missions, `jobs` at a time; returns {name: (out_dir, status, summary)}."""
-    todo = list(missions)
+    waiting = list(missions)
     results, lock = {}, threading.Lock()
 
     def worker():
         while True:
             with lock:
-                if not todo:
+                if not waiting:
                     return
-                scenario, ambient = todo.pop(0)
+                scenario, ambient = waiting.pop(0)
             out = os.path.join(root, name(scenario, ambient))
             st, summ = run_mission(scenario, ambient, out)
             with lock:
