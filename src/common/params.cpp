@@ -125,11 +125,18 @@ void applyParams(const ParamSet& ps, const ParamSource& src,
       **pv = *vec;
     }
   }
+  auto declaresUnder = [&](const std::string& section) {
+    for (const auto& k : known)
+      if (k.rfind(section, 0) == 0) return true;
+    return false;
+  };
   for (const auto& kv : src.values) {
     if (known.count(kv.first)) continue;
     bool ignored = false;
     for (const auto& p : ignore_prefixes)
       if (kv.first.rfind(p, 0) == 0) ignored = true;
+    for (const auto& p : kParticipantSections)  // the participant's, unless this set is that reader
+      if (kv.first.rfind(p, 0) == 0 && !declaresUnder(p)) ignored = true;
     if (!ignored) throw InputError(file, kv.first, "unknown key (misspelt or not used by this model)");
   }
   if (t_capture)

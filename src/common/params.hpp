@@ -67,8 +67,15 @@ class ParamSet {
   std::vector<Entry> entries_;
 };
 
+/// Sections of a participant's YAML that its participant reads, not its model: cosim/ (the step
+/// protocol's keys) and diagnostics/ (its warning thresholds), src/cosim/participant.hpp.
+inline const std::vector<std::string> kParticipantSections = {"cosim/", "diagnostics/"};
+
 /// Applies `src` to the declared fields. Keys of `src` that start with one of `ignore_prefixes`
-/// are not reported as unknown (e.g. parameters consumed by the node itself). Throws InputError.
+/// are not reported as unknown (e.g. parameters consumed by the node itself), nor are those of a
+/// kParticipantSections section of which `ps` declares no key (a model reading its participant's
+/// file; the reader of that section declares its keys, so a misspelt one is named). Throws
+/// InputError.
 void applyParams(const ParamSet& ps, const ParamSource& src,
                  const std::vector<std::string>& ignore_prefixes = {});
 

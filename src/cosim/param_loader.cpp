@@ -59,11 +59,28 @@ ParamSource loadParamSource(const ros::NodeHandle& nh, const std::string& group,
   return src;
 }
 
+const std::vector<std::string>& nodeKeyPrefixes() {
+  static const std::vector<std::string> prefixes = [] {
+    std::vector<std::string> p = {"config_file"};  // the file name itself (for messages)
+    p.insert(p.end(), kParticipantSections.begin(), kParticipantSections.end());
+    return p;
+  }();
+  return prefixes;
+}
+
+ParamSource loadModelParams(const ros::NodeHandle& pnh, const std::string& file) {
+  ParamSource src = loadParamSource(pnh, "", file);
+  for (auto it = src.values.begin(); it != src.values.end();) {
+    bool node_key = false;
+    for (const auto& p : nodeKeyPrefixes()) node_key = node_key || it->first.rfind(p, 0) == 0;
+    it = node_key ? src.values.erase(it) : std::next(it);
+  }
+  return src;
+}
+
 void applyRosParams(const ros::NodeHandle& pnh, const ParamSet& ps, const std::string& file,
                     std::vector<std::string> ignore_prefixes, const std::vector<std::string>& set_elsewhere) {
-  ignore_prefixes.push_back("config_file");
-  ignore_prefixes.push_back("loops/");  // engine loop switches (src/engine/node/engine_ports.hpp), not model keys
-  ignore_prefixes.push_back("cosim/");  // protocol keys read by the Participant base class
+  ignore_prefixes.insert(ignore_prefixes.end(), nodeKeyPrefixes().begin(), nodeKeyPrefixes().end());
   const ParamSource src = loadParamSource(pnh, "", file);
   std::size_t model_keys = 0;
   for (const auto& kv : src.values) {
@@ -100,6 +117,19 @@ double scenarioAmbientPressure_Pa(const ros::NodeHandle& nh) {
   if (!(p_Pa >= 5e4 && p_Pa <= 1.2e5))
     throw InputError("scenario (launch argument pressure)", "ambient_pressure_pa", "must be in [5e4, 1.2e5] Pa");
   return p_Pa;
+}
+
+std::string scenarioConfigFile(const ros::NodeHandle& nh, const std::string& relative) {
+  std::string dir;
+  if (!nh.getParam("/scenario/config_dir", dir) || dir.empty()) dir = resolvePackagePath(nh, "config");
+  return dir + "/" + relative;
+}
+
+std::string scenarioEngineModel(const ros::NodeHandle& nh) {
+  std::string model;
+  if (!nh.getParam("/scenario/engine_model", model))
+    throw InputError("scenario (launch argument engine)", "engine_model", "missing or not a string: map | 1d");
+  return model;
 }
 
 std::string resolvePackagePath(const ros::NodeHandle& nh, const std::string& path) {

@@ -157,8 +157,23 @@ void Participant::readDiagnosticsParams() {
   const ParamSource src = loadParamSource(nh_, "/scenario/diagnostics", file);
   applyParams(ps, src);
   if (scenario_file) requireKeys(ps, src);  // after: a misspelt key is named as unknown first
-  diag_params_.validate(file);
   diag_.setPeriod(core::toNanos(diag_params_.period_s));
+}
+
+void Participant::readWarningThresholds(const std::function<void(ParamSet&)>& declare) {
+  static const std::string kSection = "diagnostics/";
+  const std::string file = configFile();
+  ParamSet ps;
+  ps.setPrefix(kSection);
+  declare(ps);
+  ps.setPrefix("");
+  const ParamSource all = loadParamSource(pnh_, "", file);
+  ParamSource own;  // the section only: the model's keys are checked by the model's ParamSet
+  own.file = all.file;
+  for (const auto& kv : all.values)
+    if (kv.first.rfind(kSection, 0) == 0) own.values.insert(kv);
+  applyParams(ps, own);
+  if (pnh_.hasParam("config_file")) requireKeys(ps, own);  // a scenario: the file holds them all
 }
 
 void Participant::diagnose(core::Nanos t, bool final) {

@@ -56,14 +56,17 @@
 // checkWarnings() after every step and at t_0) with the simulated time of their first raise.
 // /diagnostics is an output of the link check (every subscriber connected before START) but no
 // lock-step topic: nothing steps on it and it is not in run.bag (the recorder writes it to
-// diagnostics.bag). Parameters: /scenario/diagnostics (config/diagnostics.yaml, file named by
-// /scenario/diagnostics_file), validated whole by every participant; absent = the defaults.
+// diagnostics.bag). Parameters: the status period /scenario/diagnostics/period_s
+// (config/diagnostics.yaml, file named by /scenario/diagnostics_file; absent = the default); the
+// thresholds of the participant's own warnings in the `diagnostics:` section of its YAML
+// (readWarningThresholds).
 #pragma once
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <hybrid_bus_twin/StepCommand.h>
 #include <hybrid_bus_twin/StepStatus.h>
 #include <ros/ros.h>
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -75,6 +78,7 @@
 #include "cosim/core/participant_core.hpp"
 #include "cosim/input_buffer.hpp"
 #include "cosim/output.hpp"
+#include "cosim/wiring.hpp"
 
 namespace hbt::cosim {
 
@@ -136,6 +140,19 @@ class Participant {
     outputs_.push_back(lane);
     return Output(p, lane, &core_, core_.addOutput(p.getTopic()));
   }
+  /// Wired topics (wiring.hpp): `producer`'s output `key` as declared in its topics.yaml; this
+  /// participant's own output `key`, likewise. Throw hbt::InputError when undeclared, of another
+  /// type, or (an input) when the producer does not run in this scenario.
+  template <class M>
+  Input<M>& addInputFrom(const std::string& producer, const std::string& key) {
+    return addInput<M>(inputTopic(nh_, producer, key, ros::message_traits::datatype<M>(), name_));
+  }
+  template <class M>
+  Output addOwnOutput(const std::string& key) {
+    return addOutput<M>(outputTopic(nh_, name_, key, ros::message_traits::datatype<M>()));
+  }
+  /// True when `participant` runs in this scenario (its loops close only then).
+  bool inScenario(const std::string& participant) const { return cosim::inScenario(nh_, participant); }
   /// The YAML file the parameters of this participant came from (param `config_file`).
   std::string configFile() const;
   /// End of this participant's input [s] (e.g. the mission), announced for the progress line.
@@ -149,8 +166,15 @@ class Participant {
   void setObserver(bool o) { core_.setObserver(o); }
 
   // --- diagnostics (see the header comment) ---
-  /// Thresholds and period of config/diagnostics.yaml (read before configure()).
-  const core::DiagnosticsParams& diagnosticsParams() const { return diag_params_; }
+  /// Reads this participant's warning thresholds (in configure()): the `diagnostics:` section of
+  /// its own YAML (configFile()), the keys `w.declare(ps, declare_args...)` declares (e.g.
+  /// CoolingWarnings). In a scenario (config_file set) every key is required; an unknown key,
+  /// NaN or a value out of range is an InputError naming the file and the key.
+  template <class W, class... Args>
+  void readWarningThresholds(W& w, Args&&... declare_args) {
+    readWarningThresholds([&](ParamSet& ps) { w.declare(ps, std::forward<Args>(declare_args)...); });
+  }
+  void readWarningThresholds(const std::function<void(ParamSet&)>& declare);
   /// Declares a warning (in configure()): raised when its condition held for on_delay_s [s].
   core::Warning& addWarning(const std::string& name, double on_delay_s) {
     return diag_.addWarning(name, on_delay_s);

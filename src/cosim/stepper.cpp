@@ -11,6 +11,7 @@
 
 #include "cosim/core/process_cpu.hpp"
 #include "cosim/input_buffer.hpp"
+#include "cosim/wiring.hpp"
 
 namespace hbt::cosim {
 
@@ -19,7 +20,6 @@ using hybrid_bus_twin::StepStatus;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-const char* const kParticipantRegistry = "/twin/participants";
 
 std::string jsonEscape(const std::string& s) {
   std::string o;

@@ -1,4 +1,4 @@
-// The crank-angle-resolved 1D engine behind the twin's engine interface (engine/engine_model.hpp;
+// The crank-angle-resolved 1D engine behind the twin's engine interface (engine_interface/engine_model.hpp;
 // launch engine:=1d): forwards the inputs to Engine1D (engine_1d.hpp, its equations) and its
 // outputs to the model-neutral ones, nothing else.
 //
@@ -13,7 +13,7 @@
 #pragma once
 #include <string>
 
-#include "engine/engine_model.hpp"
+#include "engine_interface/engine_model.hpp"
 #include "engine_1d/engine_1d.hpp"
 
 namespace hbt::engine_1d {

@@ -58,7 +58,7 @@ struct MapEngineParams {
   double target_peak_torque_Nm = 1100.0;   // SPEC §3
   double target_peak_power_W = 210000.0;   // SPEC §3
   // Idle speed [rad/s] of the engine (not scaled with the speed axis): where the twin's engine
-  // starts, whichever model runs it (engine/engine_model.hpp; the 1D engine reads this file as
+  // starts, whichever model runs it (engine_interface/engine_model.hpp; the 1D engine reads this file as
   // its reference). 700 rpm: VECTO 'Generic primary bus 41 Engine' (config/data/engine/README.txt).
   double idle_speed_rad_s = 73.3038;
   bool scale_speed_axis = true;            // false: torque-only scaling (power = f_T P_ref)

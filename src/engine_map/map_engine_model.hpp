@@ -1,4 +1,4 @@
-// The map-based engine behind the twin's engine interface (engine/engine_model.hpp; launch
+// The map-based engine behind the twin's engine interface (engine_interface/engine_model.hpp; launch
 // engine:=map): forwards the inputs to MapEngine (map_engine.hpp, its equations) and its outputs
 // to the model-neutral ones, nothing else.
 //
@@ -14,7 +14,7 @@
 #include <memory>
 #include <string>
 
-#include "engine/engine_model.hpp"
+#include "engine_interface/engine_model.hpp"
 #include "engine_map/map_engine.hpp"
 
 namespace hbt::engine_map {

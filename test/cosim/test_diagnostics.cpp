@@ -1,6 +1,6 @@
 // The ROS-free part of the participants' diagnostics (src/cosim/core/diagnostics.hpp): compute-time
 // window statistics, the hysteresis switch, a warning's persistence / first-time latch / re-raise,
-// the status cadence in simulated time and the status keys, and config/diagnostics.yaml's binding
+// the status cadence in simulated time and the status keys, and config/diagnostics.yaml's binding (the status period)
 // (every key of the shipped file known, bad keys and values rejected naming file and key).
 #include <gtest/gtest.h>
 
@@ -175,7 +175,6 @@ TEST(Diagnostics, ShippedConfigKnownAndBadValuesRejected) {
   hbt::ParamSet ps;
   p.declare(ps);
   hbt::applyParams(ps, src);  // every key of the shipped file is known and in range
-  p.validate(file);
   EXPECT_EQ(p.period_s, 1.0);
   ASSERT_EQ(src.file, file);
   auto rejected = [&](const std::string& key, hbt::ParamValue v) {
@@ -184,8 +183,6 @@ TEST(Diagnostics, ShippedConfigKnownAndBadValuesRejected) {
     hbt::testing::expectRejected<DiagnosticsParams>(bad, key);
   };
   rejected("period_s", 0.0);
-  rejected("vehicle/speed_eror_kmh", 3.0);  // typo: unknown key
-  rejected("cooling/overheat_c", std::nan(""));
-  rejected("vehicle/speed_error_release_kmh", 4.0);
-  rejected("cooling/overheat_release_c", 110.0);
+  rejected("period_s", std::nan(""));
+  rejected("perod_s", 1.0);  // typo: unknown key
 }

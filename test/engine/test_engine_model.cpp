@@ -1,8 +1,8 @@
-// The twin's engine interface (engine/engine_model.hpp) over both models: ONE start policy (both
+// The twin's engine interface (engine_interface/engine_model.hpp) over both models: ONE start policy (both
 // start at the idle speed of config/engine_map.yaml, torque 0, the standard atmosphere), ONE
 // ambient-pressure policy (a step without one = 101325 Pa), the loop inputs echoed as used
-// (<= 0 = none = 0), an exhaust temperature > 0 from the start; the model name check of the
-// participant's `model` parameter.
+// (<= 0 = none = 0), an exhaust temperature > 0 from the start; the factory (engine_factory.hpp):
+// the model name check of the launch argument engine, each model built from its shipped YAML.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include "common/params.hpp"
 #include "common/units.hpp"
 #include "common/yaml_params.hpp"
+#include "engine/engine_factory.hpp"
 #include "engine_1d/engine_1d_model.hpp"
 #include "engine_map/map_engine_model.hpp"
 #include "../common/input_errors.hpp"
@@ -49,7 +50,26 @@ TEST(EngineModel, ModelNamesAreCheckedNamingTheKey) {
         [&] { engine::checkEngineModelName(bad, "/engine (private parameters)", "model"); },
         "/engine (private parameters)", "model");
     EXPECT_NE(msg.find("map | 1d"), std::string::npos) << msg;
+    hbt::testing::expectInputError([&] { engine::makeEngineModel(bad, ParamSource{}, "x.yaml", repoRoot()); },
+                                   "scenario (launch argument engine)", "engine_model");
   }
+}
+
+TEST(EngineFactory, BuildsEachModelFromItsShippedYamlAndRefusesAnEmptyOne) {
+  const std::string map_file = repoRoot() + "/config/engine_map.yaml";
+  const std::string file_1d = repoRoot() + "/config/engine_1d.yaml";
+  const auto map = engine::makeEngineModel("map", readYamlParams(map_file), map_file, repoRoot());
+  EXPECT_EQ(std::string(map->name()), "map");
+  const auto e1d = engine::makeEngineModel("1d", readYamlParams(file_1d), file_1d, repoRoot(), "tvd");
+  EXPECT_EQ(std::string(e1d->name()), "1d");
+  EXPECT_EQ(map->idleSpeed(), e1d->idleSpeed());  // one key: engine_map.yaml
+  hbt::testing::expectInputError([&] { engine::makeEngineModel("map", ParamSource{}, map_file, repoRoot()); },
+                                 map_file, "");
+  // a misspelt key of the map engine's YAML is named
+  ParamSource bad = readYamlParams(map_file);
+  bad.set("idle_sped_rad_s", 70.0);
+  hbt::testing::expectInputError([&] { engine::makeEngineModel("map", bad, map_file, repoRoot()); }, map_file,
+                                 "idle_sped_rad_s");
 }
 
 TEST(EngineModel, BothModelsFollowTheSameStartAmbientAndLoopPolicies) {

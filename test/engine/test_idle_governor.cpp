@@ -1,5 +1,5 @@
 // Idle after a bus stop (issue 8): the vehicle's idle governor (config/vehicle.yaml driver/idle_*)
-// coupled with each engine model through the twin's engine interface (engine/engine_model.hpp)
+// coupled with each engine model through the twin's engine interface (engine_interface/engine_model.hpp)
 // at the 10 ms exchange, each side receiving the other's outputs of the previous exchange as in
 // the co-simulation (Jacobi). Vehicle and auxiliaries from config/vehicle.yaml and
 // config/aux/vecto_p1_example.yaml, engines from config/engine_map.yaml and config/engine_1d.yaml.

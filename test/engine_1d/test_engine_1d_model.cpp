@@ -1,4 +1,4 @@
-// Engine1DModel, the 1D engine behind the twin's engine interface (engine/engine_model.hpp): its
+// Engine1DModel, the 1D engine behind the twin's engine interface (engine_interface/engine_model.hpp): its
 // outputs equal the wrapped Engine1D's exactly on a short trace that switches every input (speed,
 // request, fuel, coolant and back-pressure loops on and off, ambient pressure missing); the
 // documented policies: start at the reference engine's idle speed (engine_map.yaml) with the

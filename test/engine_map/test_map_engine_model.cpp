@@ -1,4 +1,4 @@
-// MapEngineModel, the map engine behind the twin's engine interface (engine/engine_model.hpp):
+// MapEngineModel, the map engine behind the twin's engine interface (engine_interface/engine_model.hpp):
 // its outputs equal the wrapped MapEngine's exactly on a trace that visits every input (speed,
 // request, fuel cut, coolant and back-pressure on and off, ambient pressure missing); the
 // documented policies: start at engine_map.yaml's idle speed with the standard atmosphere, the

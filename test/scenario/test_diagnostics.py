@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 """Scenario test of the participants' /diagnostics (README "Diagnostics"): baseline_urban at
-0 degC for 60 s, in nodelets and in nodes mode, with config/diagnostics.yaml's light-off grace cut to
-30 s so that the cold SCR raises ats_below_light_off. Every participant's statuses are in
+0 degC for 60 s, in nodelets and in nodes mode, with config/aftertreatment.yaml's light-off grace
+(its diagnostics: section) cut to 30 s so that the cold SCR raises ats_below_light_off. Every participant's statuses are in
 diagnostics.bag (one at every simulated second and a final one) with its host, step counts and
 compute times; /diagnostics is not in run.bag, which stays bit-identical between the two modes; the
 warning's first time in summary.json is the one the recorded /aftertreatment/state implies; the
 report rebuilt from the bags is identical, and without diagnostics.bag it says so; a typo in
-diagnostics.yaml stops the run before the first step naming the file and the key."""
+a participant's diagnostics: section (config/vehicle.yaml) stops the run before the first step naming the file and the key."""
 import json
 import os
 import shutil
@@ -49,7 +49,7 @@ class Diagnostics(unittest.TestCase):
         cfg = os.path.join(cls.tmp, "config")
         shutil.copytree(os.path.join(REPO, "config"), cfg, ignore=shutil.ignore_patterns("data"))
         os.symlink(os.path.join(REPO, "config", "data"), os.path.join(cfg, "data"))
-        p = os.path.join(cfg, "diagnostics.yaml")
+        p = os.path.join(cfg, "aftertreatment.yaml")
         with open(p) as f:
             text = f.read()
         assert "light_off_grace_s: 300.0" in text
@@ -175,17 +175,18 @@ class Diagnostics(unittest.TestCase):
     def test_bad_diagnostics_config_rejected_before_the_first_step(self):
         cfg = os.path.join(self.tmp, "bad_config")
         shutil.copytree(os.path.join(self.tmp, "config"), cfg, symlinks=True)
-        p = os.path.join(cfg, "diagnostics.yaml")
+        p = os.path.join(cfg, "vehicle.yaml")
         with open(p) as f:
             text = f.read()
+        assert "  speed_error_kmh: 3.0" in text
         with open(p, "w") as f:
-            f.write(text.replace("speed_error_kmh: 3.0", "speed_eror_kmh: 3.0"))
+            f.write(text.replace("  speed_error_kmh: 3.0", "  speed_eror_kmh: 3.0"))
         out = os.path.join(self.tmp, "bad")
         st = run_util.run_launch(LAUNCH, out, until=5.0, config=cfg)
         self.assertEqual(st["status"], "error", st)
         self.assertEqual(st["steps"], 0, "rejected before the first step")
         self.assertIn(p, st["message"])
-        self.assertIn("vehicle/speed_eror_kmh", st["message"])
+        self.assertIn("diagnostics/speed_eror_kmh", st["message"])
 
 
 if __name__ == "__main__":

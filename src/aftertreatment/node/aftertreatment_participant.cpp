@@ -23,10 +23,11 @@ void AftertreatmentParticipant::configure() {
   else
     model_->reset(ambient_T_K_, ambient_p_Pa_);  // cold start at ambient
   inputs_.reset();
-  exhaust_ = &addInput<hybrid_bus_twin::ExhaustState>("/engine/exhaust");
-  vehicle_ = &addInput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
-  state_pub_ = addOutput<hybrid_bus_twin::AftertreatmentState>("/aftertreatment/state");
-  below_light_off_ = &addWarning("ats_below_light_off", diagnosticsParams().aftertreatment.light_off_grace_s);
+  exhaust_ = &addInputFrom<hybrid_bus_twin::ExhaustState>("engine", "exhaust");
+  vehicle_ = &addInputFrom<hybrid_bus_twin::VehicleToCooling>("vehicle", "to_cooling");
+  state_pub_ = addOwnOutput<hybrid_bus_twin::AftertreatmentState>("state");
+  readWarningThresholds(warnings_);
+  below_light_off_ = &addWarning("ats_below_light_off", warnings_.light_off_grace_s);
 }
 
 void AftertreatmentParticipant::checkWarnings(cosim::core::Nanos t) {
@@ -34,7 +35,7 @@ void AftertreatmentParticipant::checkWarnings(cosim::core::Nanos t) {
   if (below_light_off_->update(t, !o.light_off))
     below_light_off_->setMessage(cosim::core::formatText(
         "SCR not lit off for %.0f s: SCR brick %.1f degC (dosing from %.1f degC), filtered NOx "
-        "conversion %.2f (light-off at %.2f)", diagnosticsParams().aftertreatment.light_off_grace_s,
+        "conversion %.2f (light-off at %.2f)", warnings_.light_off_grace_s,
         units::kToCelsius(o.brick_T_K[kSCR]), units::kToCelsius(params_.dosing_release_T_K),
         o.nox_conversion_filtered, params_.lightoff_conversion));
 }

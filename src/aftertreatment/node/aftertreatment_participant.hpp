@@ -17,8 +17,8 @@
 // Time stepping: one model step per macro step P, fed the exact means of the 10 ms producers over
 // the last P from their cumulative totals (../step_inputs.hpp).
 // Diagnostics (README "Diagnostics"): warning ats_below_light_off (the SCR not lit off --
-// AftertreatmentState.light_off false -- for aftertreatment/light_off_grace_s without a break,
-// config/diagnostics.yaml); key/values the CVODE steps of the SCR storage (in the window and in
+// AftertreatmentState.light_off false -- for diagnostics/light_off_grace_s of config/aftertreatment.yaml
+// without a break); key/values the CVODE steps of the SCR storage (in the window and in
 // all), brick temperatures, conversion.
 #pragma once
 #include <hybrid_bus_twin/ExhaustState.h>
@@ -30,6 +30,7 @@
 #include "aftertreatment/step_inputs.hpp"
 #include "common/units.hpp"
 #include "cosim/participant.hpp"
+#include "aftertreatment/aftertreatment_warnings.hpp"
 
 namespace hbt::aftertreatment {
 
@@ -47,6 +48,7 @@ class AftertreatmentParticipant : public cosim::Participant {
  private:
   std::unique_ptr<Aftertreatment> model_;
   AtsParams params_;
+  AftertreatmentWarnings warnings_;  // diagnostics/ of config/aftertreatment.yaml
   cosim::Input<hybrid_bus_twin::ExhaustState>* exhaust_ = nullptr;
   cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
   cosim::Output state_pub_;

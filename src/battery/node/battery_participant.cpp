@@ -21,10 +21,12 @@ void BatteryParticipant::configure() {
     model_->reset(ambient_T_K_ + p.thermal.warm_cell_above_ambient_K);
   else
     model_->reset(ambient_T_K_);  // cold start: cells at ambient, SOC = pack/initial_soc
-  emachine_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
-  vehicle_ = &addInput<hybrid_bus_twin::VehicleState>("/vehicle/state");
-  state_pub_ = addOutput<hybrid_bus_twin::BatteryState>("/battery/state");
-  limited_ = &addWarning("battery_limited", diagnosticsParams().battery.duration_s);
+  emachine_ = &addInputFrom<hybrid_bus_twin::EMachineState>("emachine", "state");
+  vehicle_ = &addInputFrom<hybrid_bus_twin::VehicleState>("vehicle", "state");
+  state_pub_ = addOwnOutput<hybrid_bus_twin::BatteryState>("state");
+  BatteryWarnings warnings;  // diagnostics/ of config/battery.yaml
+  readWarningThresholds(warnings);
+  limited_ = &addWarning("battery_limited", warnings.duration_s);
 }
 
 void BatteryParticipant::checkWarnings(cosim::core::Nanos t) {

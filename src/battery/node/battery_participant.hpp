@@ -17,7 +17,7 @@
 // package root, cosim::resolvePackagePath); /scenario/ambient_temperature_c = the air around the
 // pack, constant (initial state: cells at ambient, cold start; SOC = pack/initial_soc).
 // Diagnostics (README "Diagnostics"): warning battery_limited (request_limited for
-// battery/duration_s, config/diagnostics.yaml); key/values SOC, cell temperature, power limits,
+// diagnostics/duration_s of config/battery.yaml); key/values SOC, cell temperature, power limits,
 // time limited.
 #pragma once
 #include <hybrid_bus_twin/EMachineState.h>
@@ -27,6 +27,7 @@
 
 #include "battery/battery_model.hpp"
 #include "cosim/participant.hpp"
+#include "battery/battery_warnings.hpp"
 
 namespace hbt::battery {
 

@@ -24,21 +24,20 @@ void CoolingParticipant::configure() {
     model_->reset(ambient_T_K_);  // cold start: metal, HT and LT coolant at ambient
   last_in_.ambient_T_K = ambient_T_K_;
   last_in_.ambient_p_Pa = ambient_p_Pa_;
-  heat_ = &addInput<hybrid_bus_twin::EngineHeat>("/engine/heat");
-  vehicle_ = &addInput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
-  bool hybrid = false;
-  pnh_.param("loops/ems", hybrid, false);
-  if (hybrid) emachine_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
-  state_pub_ = addOutput<hybrid_bus_twin::CoolingState>("/cooling/state");
-  const auto& d = diagnosticsParams().cooling;
-  overheat_ = &addWarning("coolant_overheat", d.duration_s);
-  overheat_level_ = std::make_unique<cosim::core::Hysteresis>(d.overheat_c, d.overheat_release_c);
+  heat_ = &addInputFrom<hybrid_bus_twin::EngineHeat>("engine", "heat");
+  vehicle_ = &addInputFrom<hybrid_bus_twin::VehicleToCooling>("vehicle", "to_cooling");
+  if (inScenario("emachine")) emachine_ = &addInputFrom<hybrid_bus_twin::EMachineState>("emachine", "state");
+  state_pub_ = addOwnOutput<hybrid_bus_twin::CoolingState>("state");
+  readWarningThresholds(warnings_);
+  warnings_.validate(configFile());
+  overheat_ = &addWarning("coolant_overheat", warnings_.duration_s);
+  overheat_level_ = std::make_unique<cosim::core::Hysteresis>(warnings_.overheat_c, warnings_.overheat_release_c);
 }
 
 void CoolingParticipant::checkWarnings(cosim::core::Nanos t) {
   const CoolingOutputs& o = model_->outputs();
   const double T_c = units::kToCelsius(o.coolant_ht_T_K);
-  const auto& d = diagnosticsParams().cooling;
+  const CoolingWarnings& d = warnings_;
   if (overheat_->update(t, overheat_level_->update(T_c)))
     overheat_->setMessage(cosim::core::formatText(
         "HT coolant %.1f degC above %.1f degC for %.1f s (thermostat %.2f open, fan engaged %.2f)",

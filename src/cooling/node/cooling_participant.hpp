@@ -10,10 +10,10 @@
 //                        fan_drive_power_w the same at the crank incl. the viscous-clutch slip.
 // Parameters: private namespace = config/cooling.yaml; /scenario/ambient_temperature_c (initial
 // state: everything at ambient, cold start); /scenario/ambient_pressure_pa (default the standard atmosphere).
-// Hybrid (private parameter loops/ems): /emachine/state lt_heat_w (e-machine housing +
+// Hybrid (the emachine participant runs): /emachine/state lt_heat_w (e-machine housing +
 // inverter heat into the LT coolant) feeds the LT circuit; baseline: 0 W (the circuit idles).
-// Diagnostics (README "Diagnostics"): warning coolant_overheat (HT coolant above cooling/overheat_c
-// until below cooling/overheat_release_c, for cooling/duration_s, config/diagnostics.yaml);
+// Diagnostics (README "Diagnostics"): warning coolant_overheat (HT coolant above diagnostics/overheat_c
+// until below diagnostics/overheat_release_c, for diagnostics/duration_s of config/cooling.yaml);
 // key/values coolant temperatures, thermostat opening, fan engagement and power.
 #pragma once
 #include "common/units.hpp"
@@ -26,6 +26,7 @@
 #include "cooling/cooling_model.hpp"
 #include "cooling/step_inputs.hpp"
 #include "cosim/participant.hpp"
+#include "cooling/cooling_warnings.hpp"
 
 namespace hbt::cooling {
 
@@ -42,9 +43,10 @@ class CoolingParticipant : public cosim::Participant {
 
  private:
   std::unique_ptr<CoolingModel> model_;
+  CoolingWarnings warnings_;  // diagnostics/ of config/cooling.yaml
   cosim::Input<hybrid_bus_twin::EngineHeat>* heat_ = nullptr;
   cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
-  cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;  // loops/ems (hybrid) only
+  cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;  // the emachine runs (hybrid) only
   cosim::Output state_pub_;
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = units::kStandardAtmosphere_Pa;
   CoolingInputs last_in_;

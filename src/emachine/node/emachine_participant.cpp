@@ -16,20 +16,19 @@ void EMachineParticipant::configure() {
   cosim::applyRosParams(pnh_, ps, configFile());
   p.data.vemp_file = cosim::resolvePackagePath(nh_, p.data.vemp_file);
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
-  bool cooling = false;
-  pnh_.param("loops/cooling", cooling, false);
   model_ = std::make_unique<EMachineModel>(p, configFile());
   model_->reset(ambient_T_K_);  // cold start: every node at ambient
-  ems_ = &addInput<hybrid_bus_twin::EmsCommand>("/ems/command");
-  battery_ = &addInput<hybrid_bus_twin::BatteryState>("/battery/state");
-  if (cooling) cooling_ = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
-  state_pub_ = addOutput<hybrid_bus_twin::EMachineState>("/emachine/state");
-  derating_ = &addWarning("emachine_derating", diagnosticsParams().emachine.duration_s);
+  ems_ = &addInputFrom<hybrid_bus_twin::EmsCommand>("ems", "command");
+  battery_ = &addInputFrom<hybrid_bus_twin::BatteryState>("battery", "state");
+  if (inScenario("cooling")) cooling_ = &addInputFrom<hybrid_bus_twin::CoolingState>("cooling", "state");
+  state_pub_ = addOwnOutput<hybrid_bus_twin::EMachineState>("state");
+  readWarningThresholds(warnings_);
+  derating_ = &addWarning("emachine_derating", warnings_.duration_s);
 }
 
 void EMachineParticipant::checkWarnings(cosim::core::Nanos t) {
   const EMachineOutputs& o = model_->outputs();
-  if (derating_->update(t, o.limits.derating_factor < diagnosticsParams().emachine.derating_factor_below))
+  if (derating_->update(t, o.limits.derating_factor < warnings_.derating_factor_below))
     derating_->setMessage(cosim::core::formatText(
         "thermal derating: live torque limit %.3f of the peak (winding %.1f degC, magnet %.1f degC)",
         o.limits.derating_factor, units::kToCelsius(o.winding_T_K), units::kToCelsius(o.magnet_T_K)));

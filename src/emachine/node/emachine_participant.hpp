@@ -4,16 +4,16 @@
 // Inputs  (stamped t_k): /ems/command (EmsCommand: em_torque_request_nm, engine_speed_rad_s --
 //                        both at the crank), /battery/state (BatteryState: terminal_voltage_v),
 //                        /cooling/state (CoolingState: coolant_lt_temperature_k) only when the
-//                        private parameter loops/cooling is true; otherwise the LT coolant is at
+//                        cooling participant runs; otherwise the LT coolant is at
 //                        the ambient temperature.
 // Output  (stamped t_k): /emachine/state (EMachineState): delivered crank torque, DC power,
 //                        losses, temperatures, live (derated) / peak / continuous crank torque
 //                        limits, lt_heat_w for the cooling node, cumulative energies.
 // Parameters: private namespace = config/emachine.yaml (data/vemp_file relative to the package,
 // /scenario/package_dir); /scenario/ambient_temperature_c (initial state: every node at ambient,
-// cold start; coolant when loops/cooling is false).
+// cold start; coolant without a cooling participant).
 // Diagnostics (README "Diagnostics"): warning emachine_derating (derating_factor below
-// emachine/derating_factor_below for emachine/duration_s, config/diagnostics.yaml); key/values
+// diagnostics/derating_factor_below for diagnostics/duration_s of config/emachine.yaml); key/values
 // derating factor, live limits, winding/magnet temperatures.
 #pragma once
 #include <hybrid_bus_twin/BatteryState.h>
@@ -23,6 +23,7 @@
 #include <memory>
 
 #include "cosim/participant.hpp"
+#include "emachine/emachine_warnings.hpp"
 #include "emachine/emachine_model.hpp"
 
 namespace hbt::emachine {
@@ -40,9 +41,10 @@ class EMachineParticipant : public cosim::Participant {
 
  private:
   std::unique_ptr<EMachineModel> model_;
+  EMachineWarnings warnings_;  // diagnostics/ of config/emachine.yaml
   cosim::Input<hybrid_bus_twin::EmsCommand>* ems_ = nullptr;
   cosim::Input<hybrid_bus_twin::BatteryState>* battery_ = nullptr;
-  cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // loops/cooling only
+  cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // the cooling participant runs only
   cosim::Output state_pub_;
   double ambient_T_K_ = 298.15;
   cosim::core::Warning* derating_ = nullptr;

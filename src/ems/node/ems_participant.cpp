@@ -15,35 +15,33 @@ void EmsParticipant::configure() {
   EmsParams p;
   ParamSet ps;
   p.declare(ps);
-  cosim::applyRosParams(pnh_, ps, configFile(), {"engine_model_config", "stop_start_supported"});
+  cosim::applyRosParams(pnh_, ps, configFile());
   p.validate(configFile());
   // The controller's engine model: the map engine's YAML, checked on its own (errors name it).
-  std::string engine_file, pkg;
-  pnh_.param<std::string>("engine_model_config", engine_file, "config/engine_map.yaml");
+  const std::string engine_file = cosim::scenarioConfigFile(nh_, "engine_map.yaml");
+  std::string pkg;
   nh_.param<std::string>("/scenario/package_dir", pkg, ".");
   engine_map::MapEngineParams mp;
   ParamSet mps;
   mp.declare(mps);
-  const ParamSource engine = readYamlParams(cosim::resolvePackagePath(nh_, engine_file));
-  applyParams(mps, engine, {"cosim/"});
+  const ParamSource engine = readYamlParams(engine_file);
+  applyParams(mps, engine);
   requireKeys(mps, engine);  // after: a misspelt key is named as unknown first
   fuel_ = std::make_unique<MapFuelModel>(std::make_unique<engine_map::MapEngine>(mp, pkg));
-  bool supported = true;
-  pnh_.param("stop_start_supported", supported, true);
+  // stop-start needs an engine that can be stopped and cranked: the map engine (the 1D engine
+  // runs on, at idle, whenever the EMS would stop it)
+  const bool supported = cosim::scenarioEngineModel(nh_) == "map";
   model_ = std::make_unique<EmsModel>(p, *fuel_, supported);
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
   ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);
 
-  demand_ = &addInput<hybrid_bus_twin::DriverDemand>("/vehicle/driver_demand");
-  em_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
-  battery_ = &addInput<hybrid_bus_twin::BatteryState>("/battery/state");
-  bool cooling = false, ats = false;
-  pnh_.param("loops/cooling", cooling, false);
-  pnh_.param("loops/aftertreatment", ats, false);
-  if (cooling) cooling_ = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
-  if (ats) ats_ = &addInput<hybrid_bus_twin::AftertreatmentState>("/aftertreatment/state");
-  command_pub_ = addOutput<hybrid_bus_twin::EmsCommand>("/ems/command");
-  engine_pub_ = addOutput<hybrid_bus_twin::EngineCommand>("/ems/engine_command");
+  demand_ = &addInputFrom<hybrid_bus_twin::DriverDemand>("vehicle", "driver_demand");
+  em_ = &addInputFrom<hybrid_bus_twin::EMachineState>("emachine", "state");
+  battery_ = &addInputFrom<hybrid_bus_twin::BatteryState>("battery", "state");
+  if (inScenario("cooling")) cooling_ = &addInputFrom<hybrid_bus_twin::CoolingState>("cooling", "state");
+  if (inScenario("aftertreatment")) ats_ = &addInputFrom<hybrid_bus_twin::AftertreatmentState>("aftertreatment", "state");
+  command_pub_ = addOwnOutput<hybrid_bus_twin::EmsCommand>("command");
+  engine_pub_ = addOwnOutput<hybrid_bus_twin::EngineCommand>("engine_command");
   last_demand_.ambient_temperature_k = ambient_T_K_;
   last_demand_.ambient_pressure_pa = ambient_p_Pa_;
 }

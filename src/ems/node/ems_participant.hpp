@@ -5,12 +5,13 @@
 // Sits in the second Gauss-Seidel group (vehicle -> EMS -> engine, e-machine -> battery):
 // Inputs: /vehicle/driver_demand (DriverDemand, fresh: stamped t_k + P, the demand for the next
 //         step), /emachine/state (live torque limits), /battery/state (SOC, T, power limits),
-//         /cooling/state (HT coolant) and /aftertreatment/state (SCR brick) when loops/cooling,
-//         loops/aftertreatment are set (else the engine and ATS count as warm).
+//         /cooling/state (HT coolant) and /aftertreatment/state (SCR brick) when those
+//         participants run (else the engine and ATS count as warm).
 // Outputs (stamped t_k + P): /ems/command (EmsCommand: split, mode and reason, for the e-machine,
 //         the vehicle and the bag), /ems/engine_command (EngineCommand for the engine node).
-// Parameters: private namespace = config/ems.yaml; engine_model_config (the map engine YAML);
-//         stop_start_supported (false with the 1D engine: it cannot be stopped and cranked).
+// Parameters: private namespace = config/ems.yaml; the map engine YAML of the scenario's config
+//         folder (cosim::scenarioConfigFile); /scenario/engine_model (stop-start with the map
+//         engine only: the 1D engine cannot be stopped and cranked).
 // Diagnostics (README "Diagnostics"): no warnings of its own (the limits it meets are the
 // e-machine's and the battery's); key/values mode, reason, equivalence factor, stops/starts.
 #pragma once

@@ -2,37 +2,32 @@
 
 #include "common/units.hpp"
 #include "cosim/param_loader.hpp"
-#include "engine/node/engine_model_factory.hpp"
+#include "engine/engine_factory.hpp"
 
 namespace hbt::engine {
 
 void EngineParticipant::configure() {
-  std::string model;
-  const std::string where = pnh_.getNamespace() + " (private parameters; launch argument engine)";
-  if (!pnh_.getParam("model", model))
-    throw InputError(where, "model", "missing or not a string: the engine model, map | 1d");
-  checkEngineModelName(model, where, "model");
+  std::string pkg, solver;
+  nh_.param<std::string>("/scenario/package_dir", pkg, ".");
+  nh_.param<std::string>("/scenario/engine_solver", solver, "");  // empty: the YAML's
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
-  model_ = makeEngineModel(model, nh_, pnh_, configFile());
+  model_ = makeEngineModel(cosim::scenarioEngineModel(nh_), cosim::loadModelParams(pnh_, configFile()),
+                           configFile(), pkg, solver);
   model_->reset(ambient_T_K_);  // idle speed, torque 0, standard atmosphere
-  bool hybrid = false;  // hybrid: the EMS's share of the demand (loops/ems), else the vehicle's
-  pnh_.param("loops/ems", hybrid, false);
-  command_ = &addInput<hybrid_bus_twin::EngineCommand>(hybrid ? "/ems/engine_command" : "/vehicle/engine_command");
-  bool cooling = false, ats = false;
-  pnh_.param("loops/cooling", cooling, false);
-  pnh_.param("loops/aftertreatment", ats, false);
-  if (cooling) loops_.cooling = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
-  if (ats) loops_.aftertreatment = &addInput<hybrid_bus_twin::AftertreatmentState>("/aftertreatment/state");
-  ports_ = EnginePorts(addOutput<hybrid_bus_twin::EngineState>("/engine/state"),
-                       addOutput<hybrid_bus_twin::ExhaustState>("/engine/exhaust"),
-                       addOutput<hybrid_bus_twin::EngineHeat>("/engine/heat"));
-  boost_limited_ = &addWarning("boost_limited", diagnosticsParams().engine.duration_s);
+  // hybrid: the EMS's share of the demand, else the vehicle's
+  command_ = &addInputFrom<hybrid_bus_twin::EngineCommand>(inScenario("ems") ? "ems" : "vehicle", "engine_command");
+  if (inScenario("cooling")) loops_.cooling = &addInputFrom<hybrid_bus_twin::CoolingState>("cooling", "state");
+  if (inScenario("aftertreatment")) loops_.aftertreatment = &addInputFrom<hybrid_bus_twin::AftertreatmentState>("aftertreatment", "state");
+  ports_ = EnginePorts(addOwnOutput<hybrid_bus_twin::EngineState>("state"),
+                       addOwnOutput<hybrid_bus_twin::ExhaustState>("exhaust"),
+                       addOwnOutput<hybrid_bus_twin::EngineHeat>("heat"));
+  readWarningThresholds(warnings_, std::string(model_->name()));
+  boost_limited_ = &addWarning("boost_limited", warnings_.duration_s);
 }
 
 void EngineParticipant::checkWarnings(cosim::core::Nanos t) {
-  const auto& d = diagnosticsParams().engine;
-  if (boost_limited_->update(t, model_->boostLimited(d.margin_nm)))
-    boost_limited_->setMessage(model_->boostLimitedMessage(d.duration_s));
+  if (boost_limited_->update(t, model_->boostLimited(warnings_.margin_nm)))
+    boost_limited_->setMessage(model_->boostLimitedMessage(warnings_.duration_s));
 }
 
 void EngineParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {

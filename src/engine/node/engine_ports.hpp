@@ -12,14 +12,13 @@
 #include "cosim/output.hpp"
 
 #include "cosim/input_buffer.hpp"
-#include "engine/engine_model.hpp"
+#include "engine_interface/engine_model.hpp"
 
 namespace hbt::engine {
 
 /// The engine's closed loops with the thermal nodes: coolant temperature from /cooling/state and
 /// turbine-outlet back-pressure from /aftertreatment/state, each read (stamped t_k) only when the
-/// scenario runs that node: private parameters loops/cooling and loops/aftertreatment (bool, set
-/// by launch/include/urban.launch). Without them 0 = none (the model's own defaults).
+/// scenario runs that participant. Without them 0 = none (the model's own defaults).
 struct EngineLoopInputs {
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling = nullptr;
   cosim::Input<hybrid_bus_twin::AftertreatmentState>* aftertreatment = nullptr;

@@ -6,22 +6,21 @@
 #include <hybrid_bus_twin/VehicleState.h>
 #include <hybrid_bus_twin/VehicleToCooling.h>
 
-#include <fstream>
+#include <functional>
 
 #include "common/errors.hpp"
 #include "common/yaml_params.hpp"
 #include "common/units.hpp"
 #include "cosim/param_loader.hpp"
 #include "emachine/emachine_params.hpp"
-#include "mission/mission_preprocessor.hpp"
+#include "mission/scenario_mission.hpp"
 
 namespace hbt::vehicle {
 
-// The idle speed is the engine's: idle_speed_rad_s of the engine's YAML (engine_config_file,
-// config/engine_map.yaml; both engine models start there). Only that key is read from it.
+// The idle speed is the engine's: idle_speed_rad_s of config/engine_map.yaml (in the scenario's
+// config folder; both engine models start there). Only that key is read from it.
 void VehicleParticipant::readEngineIdleSpeed(VehicleParams& p) {
-  std::string file;
-  if (!pnh_.getParam("engine_config_file", file)) return;  // outside a scenario: the model's default
+  const std::string file = cosim::scenarioConfigFile(nh_, "engine_map.yaml");
   const ParamSource all = readYamlParams(file);
   const auto it = all.values.find("idle_speed_rad_s");
   if (it == all.values.end())
@@ -34,33 +33,42 @@ void VehicleParticipant::readEngineIdleSpeed(VehicleParams& p) {
   applyParams(ps, one);
 }
 
-void VehicleParticipant::configure() {
-  VehicleParams p;
-  std::string aux_file;
-  if (pnh_.getParam("aux_config_file", aux_file)) {  // the auxiliary set, checked on its own
-    ParamSet aps;                                    // so that errors name its file and key
-    aps.setPrefix("aux/");
-    p.aux.declare(aps);
-    const ParamSource aux = readYamlParams(aux_file);
-    applyParams(aps, aux);
-    requireKeys(aps, aux);  // after: a misspelt key is named as unknown first
-  }
-  std::string gearbox_file;
-  if (pnh_.getParam("gearbox_config_file", gearbox_file)) {  // the gear loss set, likewise
-    ParamSet gps;
-    gps.setPrefix("gearbox/");
-    p.gearbox.declare(gps);
-    const ParamSource gearbox = readYamlParams(gearbox_file);
-    applyParams(gps, gearbox);
-    requireKeys(gps, gearbox);  // after: a misspelt key is named as unknown first
-  }
+// A file of the scenario's own sets, read on its own so that errors name its file and key:
+// the group `prefix` (aux/, gearbox/) of `file`, every key required.
+void VehicleParticipant::readSet(const std::string& file, const std::string& prefix,
+                                 const std::function<void(ParamSet&)>& declare) {
   ParamSet ps;
-  p.declare(ps);
-  cosim::applyRosParams(pnh_, ps, configFile(),
-                        {"mission/", "mission_config_file", "aux_config_file", "gearbox_config_file", "em_config_file",
-                         "engine_config_file"},
-                        {"aux/", "gearbox/"});  // their own files, required there (above)
-  readEngineIdleSpeed(p);
+  ps.setPrefix(prefix);
+  declare(ps);
+  const ParamSource src = readYamlParams(file);
+  applyParams(ps, src);
+  requireKeys(ps, src);  // after: a misspelt key is named as unknown first
+}
+
+void VehicleParticipant::readScenarioSets(VehicleParams& p) {
+  std::string aux_set, gearbox_set;
+  if (nh_.getParam("/scenario/aux_set", aux_set))  // the auxiliary set (launch argument aux)
+    readSet(cosim::scenarioConfigFile(nh_, "aux/" + aux_set + ".yaml"), "aux/",
+            [&](ParamSet& ps) { p.aux.declare(ps); });
+  if (nh_.getParam("/scenario/gearbox_set", gearbox_set))  // the gear loss set (launch argument gearbox)
+    readSet(cosim::scenarioConfigFile(nh_, "gearbox/" + gearbox_set + ".yaml"), "gearbox/",
+            [&](ParamSet& ps) { p.gearbox.declare(ps); });
+}
+
+// Hybrid: the P1 rotor turns with the crank (ratio² x its inertia), from config/emachine.yaml.
+void VehicleParticipant::addEMachineInertia(VehicleParams& p) {
+  if (!inScenario("emachine")) return;
+  const std::string file = cosim::scenarioConfigFile(nh_, "emachine.yaml");
+  emachine::EMachineParams ep;
+  ParamSet eps;
+  ep.declare(eps);
+  const ParamSource em = readYamlParams(file);
+  applyParams(eps, em);
+  requireKeys(eps, em);  // after: a misspelt key is named as unknown first
+  p.driveline.engine_inertia_kg_m2 += ep.data.crankInertia_kgm2();
+}
+
+void VehicleParticipant::readPayloadAndAmbient(VehicleParams& p) {
   double payload_kg = p.chassis.payload_kg;
   nh_.param("/scenario/payload_kg", payload_kg, payload_kg);
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
@@ -68,67 +76,61 @@ void VehicleParticipant::configure() {
   if (!(payload_kg >= 0.0 && payload_kg <= 15000.0))
     throw InputError("scenario (launch argument)", "payload", "must be in [0, 15000] kg");
   p.chassis.payload_kg = payload_kg;
-  std::string em_file;  // hybrid: the P1 rotor turns with the crank (ratio² x its inertia)
-  if (pnh_.getParam("em_config_file", em_file)) {
-    emachine::EMachineParams ep;
-    ParamSet eps;
-    ep.declare(eps);
-    const ParamSource em = readYamlParams(em_file);
-    applyParams(eps, em, {"cosim/"});
-    requireKeys(eps, em);  // after: a misspelt key is named as unknown first
-    p.driveline.engine_inertia_kg_m2 += ep.data.crankInertia_kgm2();
-  }
-  p.validate(configFile());
-  std::string pkg, out_dir, cycle;
-  nh_.param<std::string>("/scenario/package_dir", pkg, ".");
-  nh_.param<std::string>("/scenario/out_dir", out_dir, "");
-  model_ = std::make_unique<VehicleModel>(p, pkg);
+}
 
-  // Mission: same road-load data as the vehicle model, so the profile fits this bus.
-  mission::MissionParams mp;
-  ParamSet mps;
-  mp.declare(mps);
-  std::string mission_file;
-  pnh_.param<std::string>("mission_config_file", mission_file, "config/mission.yaml");
-  const ParamSource mission = cosim::loadParamSource(pnh_, "mission", mission_file);
-  applyParams(mps, mission, {"mission_config_file"});
-  requireKeys(mps, mission);  // after: a misspelt key is named as unknown first
-  if (nh_.getParam("/scenario/cycle_file", cycle)) mp.cycle_file = cycle;
-  mp.cycle_file = cosim::resolvePackagePath(nh_, mp.cycle_file);
-  mp.accel_limits_file = cosim::resolvePackagePath(nh_, mp.accel_limits_file);
-  mp.vehicle.mass_kg = p.totalMass_kg();
-  mp.vehicle.rotating_mass_kg = model_->vehicleInertiaMass_kg() - p.totalMass_kg();
-  mp.vehicle.cda_m2 = p.chassis.cda_m2;
-  mp.vehicle.rrc = model_->roadLoad().rollingCoefficient();
-  mp.profile_csv_file = out_dir.empty() ? "" : out_dir + "/profile.csv";
-  profile_ = mission::buildMissionProfile(mp);
-  if (!out_dir.empty()) writeStops(out_dir + "/stops.csv");
+// The mission, planned for this bus (src/mission/scenario_mission.hpp), and the grade along it.
+void VehicleParticipant::buildMission(const VehicleParams& p, const std::string& pkg) {
+  mission::ScenarioMission m;
+  m.mission_file = cosim::scenarioConfigFile(nh_, "mission.yaml");
+  nh_.param<std::string>("/scenario/cycle_file", m.cycle_file, "");
+  m.package_dir = pkg;
+  nh_.param<std::string>("/scenario/out_dir", m.out_dir, "");
+  m.bus.mass_kg = p.totalMass_kg();
+  m.bus.rotating_mass_kg = model_->vehicleInertiaMass_kg() - p.totalMass_kg();
+  m.bus.cda_m2 = p.chassis.cda_m2;
+  m.bus.rrc = model_->roadLoad().rollingCoefficient();
+  profile_ = mission::buildScenarioMission(m);
   setMissionDuration(profile_.duration_s());  // announced to the stepper (progress line only)
-
   const auto& cyc = profile_.cycle();
   std::vector<double> grade(cyc.grade_percent.size());
   for (std::size_t i = 0; i < grade.size(); ++i) grade[i] = cyc.grade_percent[i] / 100.0;
   model_->setGradeProfile(cyc.distance_m, grade);
-  const double v0 = profile_.speedAt(0.0);
-  model_->reset(v0, 0, p.driveline.idle_speed_rad_s, 0.0);
+}
 
-  engine_ = &addInput<hybrid_bus_twin::EngineState>("/engine/state");
-  bool cooling = false;
-  pnh_.param("loops/cooling", cooling, false);
-  if (cooling) cooling_ = &addInput<hybrid_bus_twin::CoolingState>("/cooling/state");
-  bool hybrid = false;
-  pnh_.param("loops/ems", hybrid, false);
+void VehicleParticipant::declareTopics() {
+  engine_ = &addInputFrom<hybrid_bus_twin::EngineState>("engine", "state");
+  if (inScenario("cooling")) cooling_ = &addInputFrom<hybrid_bus_twin::CoolingState>("cooling", "state");
+  const bool hybrid = inScenario("ems");  // the EMS splits the driver's demand
   if (hybrid) {
-    ems_ = &addInput<hybrid_bus_twin::EmsCommand>("/ems/command");
-    em_ = &addInput<hybrid_bus_twin::EMachineState>("/emachine/state");
+    ems_ = &addInputFrom<hybrid_bus_twin::EmsCommand>("ems", "command");
+    em_ = &addInputFrom<hybrid_bus_twin::EMachineState>("emachine", "state");
   }
-  state_pub_ = addOutput<hybrid_bus_twin::VehicleState>("/vehicle/state");
-  if (hybrid) demand_pub_ = addOutput<hybrid_bus_twin::DriverDemand>("/vehicle/driver_demand");
-  else command_pub_ = addOutput<hybrid_bus_twin::EngineCommand>("/vehicle/engine_command");
-  cooling_pub_ = addOutput<hybrid_bus_twin::VehicleToCooling>("/vehicle/to_cooling");
-  const auto& d = diagnosticsParams().vehicle;
-  not_tracking_ = &addWarning("driver_not_tracking", d.duration_s);
-  speed_error_ = std::make_unique<cosim::core::Hysteresis>(d.speed_error_kmh, d.speed_error_release_kmh);
+  state_pub_ = addOwnOutput<hybrid_bus_twin::VehicleState>("state");
+  if (hybrid) demand_pub_ = addOwnOutput<hybrid_bus_twin::DriverDemand>("driver_demand");
+  else command_pub_ = addOwnOutput<hybrid_bus_twin::EngineCommand>("engine_command");
+  cooling_pub_ = addOwnOutput<hybrid_bus_twin::VehicleToCooling>("to_cooling");
+}
+
+void VehicleParticipant::configure() {
+  VehicleParams p;
+  readScenarioSets(p);
+  ParamSet ps;
+  p.declare(ps);
+  cosim::applyRosParams(pnh_, ps, configFile(), {}, {"aux/", "gearbox/"});  // their own files (above)
+  readEngineIdleSpeed(p);
+  readPayloadAndAmbient(p);
+  addEMachineInertia(p);
+  p.validate(configFile());
+  std::string pkg;
+  nh_.param<std::string>("/scenario/package_dir", pkg, ".");
+  model_ = std::make_unique<VehicleModel>(p, pkg);
+  buildMission(p, pkg);
+  model_->reset(profile_.speedAt(0.0), 0, p.driveline.idle_speed_rad_s, 0.0);
+  declareTopics();
+  readWarningThresholds(warnings_);
+  warnings_.validate(configFile());
+  not_tracking_ = &addWarning("driver_not_tracking", warnings_.duration_s);
+  speed_error_ = std::make_unique<cosim::core::Hysteresis>(warnings_.speed_error_kmh, warnings_.speed_error_release_kmh);
 }
 
 /// Pedal position taken as saturated: the driver has no authority left [-].
@@ -141,7 +143,7 @@ void VehicleParticipant::checkWarnings(cosim::core::Nanos t) {
   const bool large = speed_error_->update(std::abs(err_kmh));
   // the target is reachable while the pedal that would close the gap is not saturated
   const bool authority = err_kmh > 0.0 ? o.accel_pedal < kPedalSaturated : o.brake_pedal < kPedalSaturated;
-  const auto& d = diagnosticsParams().vehicle;
+  const VehicleWarnings& d = warnings_;
   if (not_tracking_->update(t, large && authority))
     not_tracking_->setMessage(cosim::core::formatText(
         "speed %.1f km/h vs target %.1f km/h: |error| above %.1f km/h for %.1f s with the %s pedal at %.2f",
@@ -160,19 +162,6 @@ void VehicleParticipant::diagnosticValues(cosim::core::Nanos t, std::vector<cosi
   kv.push_back({"accelerator_pedal", formatNumber(o.accel_pedal)});
   kv.push_back({"brake_pedal", formatNumber(o.brake_pedal)});
   kv.push_back({"distance_m", formatNumber(o.distance_m)});
-}
-
-void VehicleParticipant::writeStops(const std::string& path) const {
-  std::ofstream f(path);
-  if (!f) throw InputError(path, "(file)", "cannot write the stop list");
-  f << "distance_m,t_profile_s,stop_time_s\n";
-  const auto& s = profile_.samples();
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (!s[i].stop_flag || (i > 0 && s[i - 1].stop_flag)) continue;
-    std::size_t j = i;
-    while (j + 1 < s.size() && s[j + 1].stop_flag) ++j;
-    f << s[i].distance_m << "," << s[i].t_s << "," << (s[j].t_s - s[i].t_s) << "\n";
-  }
 }
 
 void VehicleParticipant::step(const ros::Time& t, double dt_s) {

@@ -4,24 +4,24 @@
 //
 // Inputs  (stamped t_k): /engine/state (EngineState: brake torque, torque limits);
 //                        /cooling/state (CoolingState: fan shaft power on the crank) when the
-//                        private parameter loops/cooling is set (else aux/fan_default_W).
-//                        Hybrid (private parameter loops/ems): /ems/command (EmsCommand: engine
+//                        cooling participant runs (else aux/fan_default_W).
+//                        Hybrid (the EMS runs): /ems/command (EmsCommand: engine
 //                        on/off, friction brake after regeneration) and /emachine/state
 //                        (EMachineState: actual crank torque, live motoring limit).
 // Outputs (stamped t_k): /vehicle/state (VehicleState), /vehicle/to_cooling (VehicleToCooling),
 //                        baseline: /vehicle/engine_command (EngineCommand);
 //                        hybrid: /vehicle/driver_demand (DriverDemand) for the EMS instead.
-// Parameters: private namespace = config/vehicle.yaml, private group `mission/` =
-// config/mission.yaml (its vehicle/* road-load keys are overridden by the vehicle model's mass,
-// drag area, rolling resistance and rotating mass so that the profile is planned for this bus);
-// /scenario/{ambient_temperature_c, payload_kg, cycle_file, out_dir, package_dir}; hybrid:
-// em_config_file (config/emachine.yaml) -> the P1 rotor's inertia x ratio² joins the crank's;
-// engine_config_file (config/engine_map.yaml) -> its idle_speed_rad_s is the crank's start and
-// the idle governor's set point (one definition of the idle speed).
+// Parameters: private namespace = config/vehicle.yaml; beside it in the scenario's config folder
+// (cosim::scenarioConfigFile): aux/<aux_set>.yaml and gearbox/<gearbox_set>.yaml (the sets the
+// scenario names: /scenario/aux_set, gearbox_set), mission.yaml (the mission, planned for this
+// bus: src/mission/scenario_mission.hpp), engine_map.yaml (its idle_speed_rad_s is the crank's
+// start and the idle governor's set point: one definition of the idle speed), and in the hybrid
+// emachine.yaml (the P1 rotor's inertia x ratio² joins the crank's);
+// /scenario/{ambient_temperature_c, payload_kg, cycle_file, out_dir, package_dir}.
 // Side outputs at start-up: <out_dir>/profile.csv (time-based target profile) and
 // <out_dir>/stops.csv (stop positions and times); the mission duration in its ANNOUNCE.
 // Diagnostics (README "Diagnostics"): warning driver_not_tracking (|target - actual speed| beyond
-// config/diagnostics.yaml vehicle/* while the pedal that would close the gap is not saturated);
+// the diagnostics/ thresholds of config/vehicle.yaml, ../vehicle_warnings.hpp, while the pedal that would close the gap is not saturated);
 // key/values speed, target, error, gear, pedals, distance.
 #pragma once
 #include <hybrid_bus_twin/CoolingState.h>
@@ -29,9 +29,11 @@
 #include <hybrid_bus_twin/EmsCommand.h>
 #include <hybrid_bus_twin/EngineState.h>
 
+#include <functional>
 #include <memory>
 
 #include "cosim/participant.hpp"
+#include "vehicle/vehicle_warnings.hpp"
 #include "mission/mission_profile.hpp"
 #include "vehicle/vehicle_model.hpp"
 
@@ -50,14 +52,21 @@ class VehicleParticipant : public cosim::Participant {
   void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
+  // configure(), in stages
+  void readSet(const std::string& file, const std::string& prefix, const std::function<void(ParamSet&)>& declare);
+  void readScenarioSets(VehicleParams& p);
   void readEngineIdleSpeed(VehicleParams& p);
-  void writeStops(const std::string& path) const;
+  void readPayloadAndAmbient(VehicleParams& p);
+  void addEMachineInertia(VehicleParams& p);
+  void buildMission(const VehicleParams& p, const std::string& pkg);
+  void declareTopics();
   std::unique_ptr<VehicleModel> model_;
+  VehicleWarnings warnings_;  // diagnostics/ of config/vehicle.yaml
   mission::MissionProfile profile_;
   cosim::Input<hybrid_bus_twin::EngineState>* engine_ = nullptr;
-  cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // loops/cooling only
-  cosim::Input<hybrid_bus_twin::EmsCommand>* ems_ = nullptr;         // loops/ems (hybrid) only
-  cosim::Input<hybrid_bus_twin::EMachineState>* em_ = nullptr;       // loops/ems (hybrid) only
+  cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // the cooling participant runs only
+  cosim::Input<hybrid_bus_twin::EmsCommand>* ems_ = nullptr;         // hybrid (the EMS runs) only
+  cosim::Input<hybrid_bus_twin::EMachineState>* em_ = nullptr;       // hybrid (the EMS runs) only
   cosim::Output state_pub_, command_pub_, cooling_pub_, demand_pub_;
   double last_engine_max_Nm_ = 0.0, last_engine_min_Nm_ = 0.0;
   bool engine_on_ = true;

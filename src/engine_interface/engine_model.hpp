@@ -1,5 +1,6 @@
 // The engine as the twin sees it: one ROS-free interface over the engine models, so that one
-// participant (node/engine_participant.hpp) runs either of them. Implementations, each beside
+// participant (../engine/node/engine_participant.hpp) runs either of them, picked by the factory
+// ../engine/engine_factory.hpp. Implementations, each beside
 // its model: engine_map::MapEngineModel (../engine_map/map_engine_model.hpp, launch engine:=map)
 // and engine_1d::Engine1DModel (../engine_1d/engine_1d_model.hpp, engine:=1d).
 //
@@ -33,18 +34,9 @@
 #include <string>
 #include <vector>
 
-#include "common/errors.hpp"
 #include "common/units.hpp"
 
 namespace hbt::engine {
-
-/// The engine models of the twin: the launch argument `engine`, the engine participant's private
-/// parameter `model`. Throws InputError(where, key) naming the value and the choices otherwise.
-inline void checkEngineModelName(const std::string& name, const std::string& where,
-                                 const std::string& key) {
-  if (name != "map" && name != "1d")
-    throw InputError(where, key, "'" + name + "' is not an engine model: map | 1d");
-}
 
 struct EngineInputs {
   double speed_rad_s = 0.0;        // imposed crank speed ω [rad/s]
