@@ -26,7 +26,7 @@ using hybrid_bus_twin::StepStatus;
 
 namespace {
 
-int64_t dtNs(double dt_s) { return std::llround(dt_s * 1e9); }
+int64_t dtNs(double dt_s) { return core::toNanos(dt_s); }
 
 /// Subscriber nodes registered at the master for each topic.
 std::map<std::string, std::set<std::string>> masterSubscribers() {

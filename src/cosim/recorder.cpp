@@ -23,7 +23,7 @@ void Recorder::configure() {
   pnh_.param("record_period_s", period_s, 0.0);
   if (!(period_s >= 0.0 && period_s <= 3600.0))
     throw InputError(where, "record_period_s", "must be in [0, 3600] s");
-  period_ns_ = static_cast<uint64_t>(std::llround(period_s * 1e9));
+  period_ns_ = static_cast<uint64_t>(core::toNanos(period_s));
   // Stepped only at the record period when it is a multiple of the base step (else at every
   // base step, writing the multiples of the period); reads each topic's held value.
   setObserver(true);

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 #include "cosim/core/process_cpu.hpp"
 #include "cosim/input_buffer.hpp"
@@ -185,13 +186,25 @@ void Stepper::complete() {
   ros::requestShutdown();
 }
 
+Stepper::~Stepper() {
+  if (!core_ || status_written_) return;
+  const double t_s = core::toSec(core_->time());
+  std::ostringstream msg;
+  msg << "interrupted at t = " << t_s << " s (the run was stopped from outside: SIGINT/SIGTERM)";
+  if (progress_) std::fprintf(stderr, "\n");
+  std::fprintf(stderr, "stepper: %s\n", msg.str().c_str());
+  writeStatus("interrupted", msg.str(), t_s, core_->step(), wallNow() - core_->wallStart_s());
+}
+
 void Stepper::writeStatus(const std::string& status, const std::string& message, double sim_s,
                           uint64_t steps, double wall_s) {
+  status_written_ = true;
   if (status_file_.empty()) return;
   std::ofstream f(status_file_);
   f << std::setprecision(17);
   double dt = 0.01;
-  pnh_.param("dt_s", dt, 0.01);
+  if (core_) dt = core_->dt_s();  // (no parameter server call: also at shutdown)
+  else pnh_.param("dt_s", dt, 0.01);
   f << "{\n  \"status\": \"" << status << "\",\n  \"message\": \"" << jsonEscape(message)
     << "\",\n  \"sim_time_s\": " << sim_s << ",\n  \"wall_time_s\": " << wall_s
     << ",\n  \"steps\": " << steps << ",\n  \"macro_step_s\": " << dt << ",\n  \"compute_time_s\": {";

@@ -37,6 +37,10 @@ namespace hbt::cosim {
 class Stepper : public core::StepperTransport {
  public:
   Stepper(ros::NodeHandle nh, ros::NodeHandle pnh);
+  /// A run stopped from outside before it completed (SIGINT/SIGTERM: roslaunch shuts the nodes
+  /// down, Ctrl-C on `twin run`) leaves status "interrupted", message "interrupted at t = ... s"
+  /// (the time every participant was done through: what the bag holds).
+  ~Stepper() override;
   /// Reads parameters; returns false (after writing the status file) on bad parameters.
   bool start();
 
@@ -62,6 +66,7 @@ class Stepper : public core::StepperTransport {
   std::unique_ptr<core::StepperCore> core_;
   bool progress_ = true;
   std::string status_file_;
+  bool status_written_ = false;  // the run's end (ok, error) is on record
   double cpu_at_start_s_ = 0.0;  // this process's CPU time when START was sent [s]
   std::chrono::steady_clock::time_point epoch_, last_print_;
 };

@@ -315,11 +315,13 @@ class Failures(unittest.TestCase):
         self.expect_rejected("cooling.yaml", "cosim/thread", config=cfg)
 
     def test_unknown_engine_model(self):
-        """The engine participant's `model` (launch argument engine) is map | 1d: anything else
-        stops the run before the first step naming the key (here with a YAML for it present)."""
+        """The scenario's engine model (launch argument engine, /scenario/engine_model) is map | 1d:
+        anything else stops the run before the first step naming the argument (here with a YAML
+        for it present)."""
         cfg = self.config_copy()
         shutil.copy(os.path.join(cfg, "engine_map.yaml"), os.path.join(cfg, "engine_v8.yaml"))
-        self.expect_rejected("engine", "'model': 'v8' is not an engine model: map | 1d", config=cfg, engine="v8")
+        self.expect_rejected("engine", "launch argument engine): key 'engine_model': 'v8' is not an engine model: map | 1d",
+                             config=cfg, engine="v8")
 
     def test_bad_order(self):
         self.expect_rejected("stepper", "'order'", order="[[vehicle], [engine], [vehicle]]")

@@ -111,12 +111,15 @@ inline bool readsStamp(uint64_t producer_multiple, uint64_t reader_multiple, boo
   return first < s0 + mp;
 }
 
+/// Nanoseconds in a second: the sim-time unit.
+inline constexpr Nanos kNanosPerSecond = 1000000000;
+
 /// Sim time in ns of a duration in seconds (rounded), as every participant computes it.
-inline Nanos toNanos(double s) { return static_cast<Nanos>(std::llround(s * 1e9)); }
+inline Nanos toNanos(double s) { return static_cast<Nanos>(std::llround(s * static_cast<double>(kNanosPerSecond))); }
 
 /// Seconds of a sim time, computed as ros::Time::toSec() does (same bits).
 inline double toSec(Nanos t) {
-  return static_cast<double>(t / 1000000000) + 1e-9 * static_cast<double>(t % 1000000000);
+  return static_cast<double>(t / kNanosPerSecond) + 1e-9 * static_cast<double>(t % kNanosPerSecond);
 }
 
 }  // namespace hbt::cosim::core

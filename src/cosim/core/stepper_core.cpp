@@ -8,6 +8,12 @@
 
 namespace hbt::cosim::core {
 namespace {
+// Wall time the stepper waits for every CLOSED before it completes without the missing ones [s]:
+// after FINISH the recorder flushes its bag (seconds on a loaded machine); after ABORT a
+// participant that failed may never answer, so the run ends promptly.
+constexpr double kCloseWaitAfterFinish_s = 5.0;
+constexpr double kCloseWaitAfterAbort_s = 0.7;
+
 std::string seconds(Nanos t) {
   std::ostringstream os;
   os << std::fixed << std::setprecision(3) << toSec(t) << " s";
@@ -337,7 +343,7 @@ void StepperCore::onTick(double wall_s) {
       }
       return;
     case Phase::Closing:
-      if (wall_s - phase_since_ > (aborted_ ? 0.7 : 5.0)) {
+      if (wall_s - phase_since_ > (aborted_ ? kCloseWaitAfterAbort_s : kCloseWaitAfterFinish_s)) {
         tr_.warn("stepper: no CLOSED from " + missing([](const Peer& p) { return p.closed; }));
         complete();
       }
