@@ -7,11 +7,11 @@ import subprocess
 import unittest
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-TOOL = os.path.join(REPO, "scripts", "launch_args.py")
+TOOL = ["-m", "twin_tools.launch.args"]
 
 
 def check(*args, scenario="baseline_urban"):
-    r = subprocess.run(["/usr/bin/python3", TOOL, REPO, scenario, *args],
+    r = subprocess.run(["/usr/bin/python3", *TOOL, REPO, scenario, *args],
                        capture_output=True, text=True)
     return r.returncode, r.stdout.split(), r.stderr
 

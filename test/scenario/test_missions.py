@@ -11,16 +11,15 @@ fuel is below the baseline's at the same ambient. Finally each summary equals th
 (test/scenario/reference/missions) within mission_reference.REL_TOL."""
 import os
 import shutil
-import sys
 import tempfile
 import unittest
 
 import yaml
 
+from twin_tools import references as mr
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import mission_reference as mr  # noqa: E402
 
 CLOSURE_BOUND = 1e-9
 STOP_POSITION_TOL_KM = 0.01  # a stop is served within metres of its position (stop_service/)

@@ -8,9 +8,9 @@ import sys
 import tempfile
 import unittest
 
+from twin_tools import units as twin_units
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import twin_units  # noqa: E402
 
 PRINT_UNITS = sys.argv.pop(1) if len(sys.argv) > 1 else None
 

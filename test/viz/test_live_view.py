@@ -13,19 +13,17 @@ import os
 import shutil
 import signal
 import subprocess
-import sys
 import tempfile
 import time
 import unittest
 
 import numpy as np
 
+from twin_tools.launch import run_util
+from twin_tools.report import postprocess
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-import run_util  # noqa: E402
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import postprocess  # noqa: E402
 
 SCREEN = (1400, 900)
 # hue ranges (PIL HSV, 0..255) of the palette in scripts/viz_layout.py
@@ -33,7 +31,6 @@ HUES = {"red": [(0, 8), (248, 255)], "orange": [(14, 30)], "yellow": [(32, 44)],
         "cyan": [(118, 136)], "blue": [(144, 164)], "purple": [(186, 210)]}
 MIN_PX = 300            # a gauge colour is present with at least this many pixels
 BUS_PX = (1500, 30000)  # the blue of the bus (12 m x 3 m at ~14 px/m, + the route-strip icon)
-
 
 VIEW = (0, 70, SCREEN[0], SCREEN[1] - 40)   # rviz's 3D view: the window without menu, tool and status bars
 

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """`scripts/twin bench cosim`: the lock-step protocol alone (issue 9, item 8).
 
 N probe participants (src/cosim/probe_participant.hpp: no model; each reads the previous one's

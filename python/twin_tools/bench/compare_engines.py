@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Map engine vs 1D engine on the same stretch of a mission: torque traces (requested and actual
 brake torque, from the bags by header.stamp), boost and fuel rate, plus a table of cumulative
 fuel, NOx and wall/simulated time from the two runs' summary.json.

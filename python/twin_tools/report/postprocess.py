@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Results of one run of the twin: summary.json, report.md and PNG plots, computed from the bag
 alone (analysed by header.stamp).
 
@@ -22,13 +21,9 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import diagnostics  # noqa: E402
-import ledger  # noqa: E402
-import thermal  # noqa: E402
-import hybrid  # noqa: E402
-from twin_units import DIESEL_DENSITY_KG_L  # noqa: E402
-from bag_input import BagError, open_bag  # noqa: E402
+from twin_tools.bags.reader import BagError, open_bag
+from twin_tools.report import diagnostics, hybrid, ledger, thermal
+from twin_tools.units import DIESEL_DENSITY_KG_L
 
 J_PER_KWH = 3.6e6
 

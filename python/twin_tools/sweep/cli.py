@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Parameter sweeps of the twin: a matrix of scenarios (scripts/twin sweep).
 
   sweep.py SPEC.yaml [--out DIR] [--jobs N] [--slurm] [name:=value ...]
@@ -20,13 +19,12 @@ import shutil
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import sweep_run  # noqa: E402
-import sweep_spec  # noqa: E402
-import sweep_table  # noqa: E402
-import sweep_yaml  # noqa: E402
+from twin_tools.paths import REPO
+from twin_tools.sweep import config_edit as sweep_yaml
+from twin_tools.sweep import run as sweep_run
+from twin_tools.sweep import spec as sweep_spec
+from twin_tools.sweep import table as sweep_table
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SWEEP_FILES = ("plan.json", "sweep.csv", "sweep.md", "timing.json")
 SWEEP_DIRS = ("runs", "plots", "slurm")
 
@@ -108,7 +106,7 @@ def main_sweep(argv):
     t0 = time.time()
     timing = {"jobs": spec.jobs, "slurm_job": None}
     if a.slurm:
-        import sweep_slurm
+        from twin_tools.sweep import slurm as sweep_slurm
         try:
             timing["slurm_job"] = sweep_slurm.run_slurm(plan, spec.jobs, spec.slurm)
         except RuntimeError as e:

@@ -12,7 +12,7 @@ import subprocess
 import sys
 import time
 
-import sweep_run
+from twin_tools.sweep import run as sweep_run
 
 
 def script(plan, jobs, options):
@@ -27,8 +27,9 @@ def script(plan, jobs, options):
              "#SBATCH --ntasks=1"]
     lines += ["#SBATCH --%s=%s" % kv for kv in sorted(options.items())]
     lines += ["set -eu",
-              "exec /usr/bin/python3 %s task %s \"$SLURM_ARRAY_TASK_ID\"" % (
-                  shlex.quote(os.path.join(plan["repo"], "scripts", "sweep.py")),
+              # the package from the repository itself: a compute node's shell has no devel space
+              "export PYTHONPATH=%s${PYTHONPATH:+:$PYTHONPATH}" % shlex.quote(os.path.join(plan["repo"], "python")),
+              "exec /usr/bin/python3 -m twin_tools.sweep.cli task %s \"$SLURM_ARRAY_TASK_ID\"" % (
                   shlex.quote(os.path.join(out, "plan.json")))]
     return "\n".join(lines) + "\n"
 

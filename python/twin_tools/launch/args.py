@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Checks the name:=value arguments of `twin run` before anything starts, and writes them back
 normalised (numbers in plain decimal notation, which roslaunch's substitution args always read
 as numbers: `step:=1e-3` becomes `step:=0.001`).

@@ -11,11 +11,9 @@ import json
 import math
 import os
 import re
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import hybrid  # noqa: E402
-import sweep_run  # noqa: E402
+from twin_tools.report import hybrid
+from twin_tools.sweep import run as sweep_run
 
 # (column, summary key, format in the Markdown table, unit/meaning)
 QUANTITIES = [

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Benchmarks of the twin (full missions: minutes to hours; never part of the test suite).
 
   scripts/twin bench [map]          baseline_urban, map engine, full mission, mode nodes and
@@ -39,9 +38,9 @@ import subprocess
 import sys
 import time
 
-import bench_cosim
-
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from twin_tools.bench import cosim as bench_cosim
+from twin_tools.bench.rates_config import all_fast_config
+from twin_tools.paths import REPO
 
 
 def run_scenario(scenario, out, args):
@@ -165,7 +164,7 @@ def bench_1d(a):
             s.get("fuel_kg", float("nan")), s.get("fuel_l_per_100km", float("nan")),
             "%.1f" % s["nox_engine_out_g"] if "nox_engine_out_g" in s else "-"))
     if len(outs) == 2:
-        subprocess.call([sys.executable, os.path.join(REPO, "scripts", "compare_engines.py"),
+        subprocess.call([sys.executable, "-m", "twin_tools.bench.compare_engines",
                          outs["map"], outs["1d"], "--from", "40", "--to", "120"])
     with open(os.path.join(REPO, "results", "bench", "engine.json"), "w") as f:
         json.dump(dict(rows), f, indent=2)
@@ -252,7 +251,7 @@ def bench_hybrid(a):
         for amb in (0, 25, 40):
             (bo, bs), (ho, hs) = results[(engine, amb, "baseline_urban")], results[(engine, amb, "hybrid_urban")]
             if bs and hs:
-                subprocess.call([sys.executable, os.path.join(REPO, "scripts", "postprocess.py"), ho,
+                subprocess.call([sys.executable, "-m", "twin_tools.report.postprocess", ho,
                                  "--bag", os.path.join(ho, "run.bag"), "--baseline", os.path.join(bo, "summary.json")],
                                 stdout=subprocess.DEVNULL)
                 with open(os.path.join(ho, "summary.json")) as f:
@@ -289,8 +288,6 @@ def bench_hybrid(a):
 def bench_rates(a):
     """Issue 9 item 1: the documented rates vs all at 10 ms, full mission, nodelets."""
     import shutil
-    sys.path.insert(0, os.path.join(REPO, "test", "scenario"))
-    from test_rates import all_fast_config  # the same config edit as the test
     tmp = os.path.join(REPO, "results", "bench", "rates_config")
     shutil.rmtree(tmp, ignore_errors=True)
     os.makedirs(tmp)

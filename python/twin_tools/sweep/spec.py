@@ -23,13 +23,11 @@ message naming the spec file and the key. Paths in the spec are relative to the 
 import itertools
 import os
 import re
-import sys
 
 import yaml
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import launch_args  # noqa: E402
-import sweep_yaml  # noqa: E402
+from twin_tools.launch import args as launch_args
+from twin_tools.sweep import config_edit as sweep_yaml
 
 TOP_KEYS = ("scenarios", "jobs", "out", "fixed", "vary", "config", "slurm")
 SLURM_KEYS = ("partition", "time", "cpus-per-task", "mem", "account", "qos", "constraint", "nodes")
