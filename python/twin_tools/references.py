@@ -60,7 +60,7 @@ def launch_arguments(ambient_c):
 
 
 def summarise(scenario, ambient_c, out_dir):
-    """summary.json of a finished run, written by scripts/postprocess.py with the run's launch
+    """summary.json of a finished run, written by twin_tools.report.postprocess with the run's launch
     arguments as `twin run` does; returns it."""
     import subprocess
     args = ["%s:=%s" % kv for kv in launch_arguments(ambient_c).items()]
@@ -158,7 +158,7 @@ def read_reference(scenario, ambient_c):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap = argparse.ArgumentParser(prog="twin references", description=__doc__.split("\n\n")[0])
     ap.add_argument("--update", action="store_true", help="write the references from these runs")
     ap.add_argument("--only", default="", help="comma-separated mission names, e.g. hybrid_urban_40C")
     ap.add_argument("--jobs", type=int, default=2, help="missions at a time (default 2)")

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Launch arguments of `twin run` (scripts/launch_args.py): every class of bad input is rejected
+"""Launch arguments of `twin run` (twin_tools.launch.args): every class of bad input is rejected
 before anything starts, naming the argument; numbers in scientific notation are normalised to
 the plain decimals roslaunch reads as numbers, never silently replaced by a default."""
 import os

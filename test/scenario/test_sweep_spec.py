@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Sweep specs without running anything (scripts/sweep_spec.py, sweep_yaml.py, sweep_table.py,
-sweep_slurm.py): the example specs expand to their matrices; every kind of bad input is rejected
+"""Sweep specs without running anything (twin_tools.sweep: spec, config_edit, table,
+slurm): the example specs expand to their matrices; every kind of bad input is rejected
 before anything starts with a message naming the spec file and the key; a config key is set in a
 copy that differs from the original on that line only (never added when missing); the saving of a
 hybrid run is taken against the conventional run with the same parameters; the sbatch script

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""scripts/twin_units.py: the constants the scripts read from src/common/units.hpp equal the C++
+"""twin_tools.units: the constants the tools read from src/common/units.hpp equal the C++
 build's (printed by the print_units tool, whose path ctest passes as the first argument); a name
 without a `constexpr double NAME = NUMBER;` line is an error naming the file and the name."""
 import os

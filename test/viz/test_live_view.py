@@ -6,7 +6,7 @@
   - replay: a short hybrid_urban bag through `scripts/twin replay BAG --start S --rate R`: the
     bus, the stops and every gauge colour, the hybrid's included;
   - `twin replay` rejects a bad --rate / --start / bag with exit status 2 and a message naming it.
-Colours are told apart by hue (scripts/viz_layout.py's palette; rviz shades faces but keeps
+Colours are told apart by hue (twin_tools.viz.layout's palette; rviz shades faces but keeps
 hues); the screen's unsaturated background, grid and text never count.
 Skipped (with a message) only when rviz or Xvfb is not installed (scripts/twin setup --viz)."""
 import os
@@ -26,7 +26,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 
 SCREEN = (1400, 900)
-# hue ranges (PIL HSV, 0..255) of the palette in scripts/viz_layout.py
+# hue ranges (PIL HSV, 0..255) of the palette in twin_tools.viz.layout
 HUES = {"red": [(0, 8), (248, 255)], "orange": [(14, 30)], "yellow": [(32, 44)], "green": [(80, 100)],
         "cyan": [(118, 136)], "blue": [(144, 164)], "purple": [(186, 210)]}
 MIN_PX = 300            # a gauge colour is present with at least this many pixels

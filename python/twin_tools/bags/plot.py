@@ -1,7 +1,8 @@
 """rqt_plot-style plot of numeric message fields from a bag of the twin, against header.stamp.
 
-  scripts/plot_topic DIR/run.bag /vehicle/state/speed_m_s /vehicle/state/target_speed_m_s [-o out.png]
-                     [--from S] [--to S]
+  scripts/twin plot DIR/run.bag /vehicle/state/speed_m_s /vehicle/state/target_speed_m_s [-o out.png]
+                    [--from S] [--to S]
+  (also scripts/plot_topic, e.g. rosrun hybrid_bus_twin plot_topic, with the same arguments)
 
 Each argument is <topic>/<field>. Without -o the figure is written next to the bag as
 plot_<field>.png (the machines running the twin are often headless).
@@ -14,7 +15,7 @@ from twin_tools.bags.reader import BagError, open_bag
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(prog="plot_topic", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("bag")
     ap.add_argument("series", nargs="+", help="<topic>/<field>")
     ap.add_argument("-o", "--out")

@@ -20,14 +20,14 @@
                                     torque chain [[vehicle, aftertreatment, cooling], [engine]] as
                                     the hybrid's, so both see the engine torque without delay);
                                     one table per temperature (results/bench/hybrid.md) with the
-                                    SOC-corrected fuel saving (scripts/hybrid.py)
+                                    SOC-corrected fuel saving (twin_tools.report.hybrid)
   scripts/twin bench rates [--engines map] [--until S]  multi-rate stepping vs everything at the
                                     10 ms base step (cooling macro step, ATS model step 0.01 s in a
                                     config copy): fuel and temperature rises (issue 9, item 1)
   scripts/twin bench cosim [--steps K]  the lock-step protocol alone: base steps per second for 3,
                                     5 and 8 probe participants (no model), nodelets and nodes, one
                                     rate / multi-rate / one Gauss-Seidel group per participant
-                                    (scripts/bench_cosim.py; K base steps per nodelets run, K/4 for nodes)
+                                    (twin_tools.bench.cosim; K base steps per nodelets run, K/4 for nodes)
 Results: printed as a table and written to results/bench/<name>.json.
 """
 import argparse
@@ -262,7 +262,7 @@ def bench_hybrid(a):
     lines = ["# Baseline vs 48 V P1 hybrid, VECTO Urban, full mission%s" % (" (first %g s)" % a.until if a.until else ""), "",
              "Produced by `scripts/twin bench hybrid --engines %s --jobs %d`; nodelets; both runs of a pair with the"
              " torque chain stepped without delay (Gauss-Seidel groups). Saving = (baseline fuel - hybrid fuel"
-             " corrected for the battery's energy change) / baseline fuel (scripts/hybrid.py)." % (a.engines, a.jobs), ""]
+             " corrected for the battery's energy change) / baseline fuel (twin_tools.report.hybrid)." % (a.engines, a.jobs), ""]
     table = {}
     for engine in engines:
         for amb in (0, 25, 40):
@@ -319,7 +319,8 @@ def bench_rates(a):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__)
+    ap = argparse.ArgumentParser(prog="twin bench", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient", "hybrid", "rates", "cosim"])
     ap.add_argument("--engines", default="map,1d", help="ambient, hybrid: engine models, comma-separated")
     ap.add_argument("--jobs", type=int, default=1, help="ambient, hybrid: runs at a time")

@@ -1,14 +1,17 @@
 """Parameter sweeps of the twin: a matrix of scenarios (scripts/twin sweep).
 
-  sweep.py SPEC.yaml [--out DIR] [--jobs N] [--slurm] [name:=value ...]
-      checks the whole spec (scripts/sweep_spec.py), writes DIR/plan.json and every run's config
+  twin sweep SPEC.yaml [--out DIR] [--jobs N] [--slurm] [name:=value ...]
+      checks the whole spec (twin_tools.sweep.spec), writes DIR/plan.json and every run's config
       copy, runs each entry with `twin run` into DIR/runs/<run-id>/ (its own ROS master and port),
       N at a time on this machine under one progress line, or with --slurm as a Slurm job array
-      (scripts/sweep_slurm.py); then DIR/sweep.csv, DIR/sweep.md and DIR/plots/ (scripts/sweep_table.py).
+      (twin_tools.sweep.slurm); then DIR/sweep.csv, DIR/sweep.md and DIR/plots/ (twin_tools.sweep.table).
       name:=value: launch arguments for every run (override the spec's `fixed`), e.g. until:=300.
-  sweep.py --check SPEC.yaml [...]   only the checks (scripts/twin sweep runs them before setup)
-  sweep.py task PLAN.json INDEX      one run of a plan (what each Slurm array task runs)
-  sweep.py table DIR                 the table and plots again from DIR/plan.json and the runs
+  python3 -m twin_tools.sweep.cli --check SPEC.yaml [...]   only the checks (scripts/twin sweep
+                                     runs them before setup)
+  python3 -m twin_tools.sweep.cli task PLAN.json INDEX      one run of a plan (what each Slurm
+                                     array task runs)
+  python3 -m twin_tools.sweep.cli table DIR                 the table and plots again from
+                                     DIR/plan.json and the runs
 Exit status: 0 every run ok, 1 a run failed (the table says which and why), 2 a bad spec or
 command line (nothing started).
 """
@@ -132,7 +135,7 @@ def report(plan, timing):
 def main(argv):
     if argv[:1] == ["task"]:
         if len(argv) != 3 or not argv[2].isdigit():
-            fail("usage: sweep.py task PLAN.json INDEX")
+            fail("usage: python3 -m twin_tools.sweep.cli task PLAN.json INDEX")
         with open(argv[1]) as f:
             plan = json.load(f)
         i = int(argv[2])
@@ -143,7 +146,7 @@ def main(argv):
         return 0 if rc == 0 else 1
     if argv[:1] == ["table"]:
         if len(argv) != 2:
-            fail("usage: sweep.py table DIR")
+            fail("usage: python3 -m twin_tools.sweep.cli table DIR")
         p = os.path.join(argv[1], "plan.json")
         if not os.path.exists(p):
             fail("%s: no plan.json (not a sweep's folder)" % argv[1])

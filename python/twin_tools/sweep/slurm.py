@@ -1,5 +1,5 @@
-"""A sweep as a Slurm job array (scripts/sweep.py --slurm): task k = run k of OUT/plan.json, run
-by `sweep.py task OUT/plan.json k` (the same code as a local run: `twin run` into
+"""A sweep as a Slurm job array (`twin sweep --slurm`): task k = run k of OUT/plan.json, run
+by `python3 -m twin_tools.sweep.cli task OUT/plan.json k` (the same code as a local run: `twin run` into
 OUT/runs/<run-id>/ on its own ROS master), at most `jobs` tasks at a time (`--array=0-(N-1)%jobs`).
 OUT and the repository must be visible at the same path on the compute nodes (a shared file
 system). The sweep waits for the array to leave the queue (squeue polling, one progress line),
@@ -19,7 +19,7 @@ def script(plan, jobs, options):
     """Text of the sbatch script."""
     out, n = plan["out"], len(plan["runs"])
     lines = ["#!/bin/bash",
-             "# hybrid_bus_twin sweep %s: %d runs (written by scripts/sweep.py --slurm)" % (plan["name"], n),
+             "# hybrid_bus_twin sweep %s: %d runs (written by scripts/twin sweep --slurm)" % (plan["name"], n),
              "#SBATCH --job-name=hbt_sweep_%s" % plan["name"],
              "#SBATCH --array=0-%d%%%d" % (n - 1, jobs),
              "#SBATCH --output=%s" % os.path.join(out, "slurm", "task_%a.out"),

@@ -1,10 +1,10 @@
 """A sweep spec (YAML) checked as a whole and expanded into its runs, before anything starts
-(scripts/sweep.py). Format (config/sweeps/ambient_study.yaml is an example):
+(twin_tools.sweep.cli). Format (config/sweeps/ambient_study.yaml is an example):
 
   scenarios: [baseline_urban, hybrid_urban]   # launch/<name>.launch; the scenario sets the architecture
   jobs: 2                   # runs at a time on this machine (CLI --jobs wins); Slurm: the array's throttle
   out: results/sweeps/NAME  # results folder, relative to the repository (CLI --out wins)
-  fixed:                    # launch arguments of every run (scripts/launch_args.py): name: value
+  fixed:                    # launch arguments of every run (twin_tools.launch.args): name: value
     until: 300
   vary:                     # launch arguments, each a list of values: one axis of the matrix
     ambient: [0, 25, 40]

@@ -1,6 +1,6 @@
 """Live view of the twin in rviz (launch argument rviz:=true of a run, and scripts/twin replay):
 not a participant of the lock-step protocol, it only listens. Publishes /twin/markers
-(visualization_msgs/MarkerArray, frame 'bus'; drawn by scripts/viz_layout.py, layout
+(visualization_msgs/MarkerArray, frame 'bus'; drawn by twin_tools.viz.layout, layout
 config/twin.rviz) at a wall-clock rate, whatever the simulated speed.
 
 It subscribes to the twin's state topics as they appear on the master (checked once a wall
