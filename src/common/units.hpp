@@ -22,7 +22,7 @@ constexpr double kGravity_m_s2 = 9.81;  // VECTO uses 9.81 m/s^2
 // wherever a scenario or an input gives none (the engine's reset and its command fallback).
 constexpr double kStandardAtmosphere_Pa = 101325.0;
 // Diesel fuel, the one definition for the models, the tools and the Python scripts
-// (scripts/twin_units.py reads these lines: keep each as `constexpr double NAME = NUMBER;`).
+// (python/twin_tools/units.py reads these lines: keep each as `constexpr double NAME = NUMBER;`).
 // Lower heating value (net calorific value): the VECTO declaration value for diesel B7.
 constexpr double kDieselLhv_J_kg = 42.7e6;
 // Density at 15 degC: EN 590 allows 0.820-0.845 kg/L (VECTO's reference fuel B7 has 0.836 kg/L);

@@ -17,7 +17,7 @@
 namespace hbt::mission {
 
 /// When a stop of the mission counts as served: the one definition used by the ROS report
-/// (scripts/postprocess.py, scripts/ledger.py read it from the run's resolved_config/vehicle.csv)
+/// (twin_tools.report.postprocess and .ledger read it from the run's resolved_config/vehicle.csv)
 /// and by the in-process mission runner (src/vehicle/tools/mission_run.hpp).
 /// A stop (profile window [t_0, t_0 + D]) is served when the bus stands still (speed below
 /// standstill_speed_m_s) for at least served_fraction · D within [t_0, t_0 + D + window_after_s].

@@ -1,4 +1,4 @@
-// Prints the constants of src/common/units.hpp that scripts/twin_units.py reads, as the C++
+// Prints the constants of src/common/units.hpp that twin_tools.units reads, as the C++
 // build has them (%.17g: each double exactly), for test/scenario/test_twin_units.py.
 #include <cstdio>
 

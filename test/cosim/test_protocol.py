@@ -8,13 +8,11 @@ rejected before step 0 naming the file or parameter and the key."""
 import math
 import os
 import signal
-import sys
 import tempfile
 import time
 import unittest
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import run_util  # noqa: E402
+from twin_tools.launch import run_util
 
 LAUNCH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "oscillator.launch")
 W1, W2 = math.sqrt(100.0), math.sqrt(140.0)  # k = 100 N/m, k_c = 20 N/m, m = 1 kg

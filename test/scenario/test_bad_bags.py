@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The bag tools never crash on a bad file (scripts/bag_input.py): `twin report`, `twin plot` and
+"""The bag tools never crash on a bad file (twin_tools.bags.reader): `twin report`, `twin plot` and
 `twin replay` answer a missing path, a folder, an empty file, a file that is not a bag, a bag cut
 short (unindexed) and a bag without the twin's run metadata with exit status != 0 and one
 message naming the file -- no traceback. The cut bag is a real bag written here and truncated;

@@ -13,17 +13,15 @@ import os
 import shutil
 import signal
 import subprocess
-import sys
 import tempfile
 import time
 import unittest
 
+from twin_tools.launch import run_util
+from twin_tools.units import DIESEL_LHV_J_KG
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import run_util  # noqa: E402
-from twin_units import DIESEL_LHV_J_KG  # noqa: E402
 
 LAUNCH = os.path.join(REPO, "launch", "baseline_urban.launch")
 UNTIL = 60.0
@@ -148,7 +146,7 @@ class Baseline(unittest.TestCase):
                 lines = [edit(line) for line in f]
             with open(path, "w") as f:
                 f.writelines(line for line in lines if line is not None)
-            r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"), out,
+            r = subprocess.run(["/usr/bin/python3", "-m", "twin_tools.report.postprocess", out,
                                 "--scenario", "baseline_urban"], capture_output=True, text=True)
             s = json.load(open(os.path.join(out, "summary.json"))) if r.returncode == 0 else None
             return r, s
@@ -173,7 +171,7 @@ class Baseline(unittest.TestCase):
         import math
         out = os.path.join(self.tmp, "ledger")  # a copy: the report appends the run info to the bag
         shutil.copytree(self.runs["nodes"][0], out)
-        r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"), out,
+        r = subprocess.run(["/usr/bin/python3", "-m", "twin_tools.report.postprocess", out,
                             "--scenario", "baseline_urban"], capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(os.path.join(out, "summary.json")) as f:
@@ -214,7 +212,7 @@ class Baseline(unittest.TestCase):
         self.assertTrue(os.path.exists(os.path.join(out, "operating_map.png")))
         # the same report from the bag alone (scripts/twin report) is identical
         again = os.path.join(self.tmp, "from_bag")
-        r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"),
+        r = subprocess.run(["/usr/bin/python3", "-m", "twin_tools.report.postprocess",
                             "--bag", os.path.join(out, "run.bag"), again], capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
         for f in ("summary.json", "report.md"):

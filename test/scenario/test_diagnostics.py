@@ -12,17 +12,16 @@ import os
 import shutil
 import socket
 import subprocess
-import sys
 import tempfile
 import unittest
 
+from twin_tools.launch import run_util
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-import run_util  # noqa: E402
 
 LAUNCH = os.path.join(REPO, "launch", "baseline_urban.launch")
-POSTPROCESS = os.path.join(REPO, "scripts", "postprocess.py")
+POSTPROCESS = ["-m", "twin_tools.report.postprocess"]
 UNTIL = 60.0
 GRACE_S = 30.0
 NS = 10**9
@@ -132,7 +131,7 @@ class Diagnostics(unittest.TestCase):
     def test_warning_in_summary_matches_states(self):
         out = os.path.join(self.tmp, "report")
         shutil.copytree(self.runs["nodelets"][0], out)
-        r = subprocess.run(["/usr/bin/python3", POSTPROCESS, out, "--scenario", "baseline_urban",
+        r = subprocess.run(["/usr/bin/python3", *POSTPROCESS, out, "--scenario", "baseline_urban",
                             "ambient:=0", "until:=60"], capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(os.path.join(out, "summary.json")) as f:
@@ -154,7 +153,7 @@ class Diagnostics(unittest.TestCase):
         self.assertIn("| 30.00 | aftertreatment | ats_below_light_off | 1 | 30.00 |", rep)
         # the same report from the bags alone (scripts/twin report)
         again = os.path.join(self.tmp, "from_bag")
-        r = subprocess.run(["/usr/bin/python3", POSTPROCESS, "--bag", os.path.join(out, "run.bag"), again],
+        r = subprocess.run(["/usr/bin/python3", *POSTPROCESS, "--bag", os.path.join(out, "run.bag"), again],
                            capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
         for f in ("summary.json", "report.md"):
@@ -164,7 +163,7 @@ class Diagnostics(unittest.TestCase):
         alone = os.path.join(self.tmp, "alone")
         os.makedirs(alone)
         shutil.copy(os.path.join(out, "run.bag"), alone)
-        r = subprocess.run(["/usr/bin/python3", POSTPROCESS, "--bag", os.path.join(alone, "run.bag")],
+        r = subprocess.run(["/usr/bin/python3", *POSTPROCESS, "--bag", os.path.join(alone, "run.bag")],
                            capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(os.path.join(alone, "summary.json")) as f:

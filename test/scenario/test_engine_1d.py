@@ -9,16 +9,14 @@ nodelets give the same bag."""
 import math
 import os
 import shutil
-import sys
 import tempfile
 import unittest
 
+from twin_tools.launch import run_util
+from twin_tools.units import DIESEL_LHV_J_KG
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import run_util  # noqa: E402
-from twin_units import DIESEL_LHV_J_KG  # noqa: E402
 
 LAUNCH = os.path.join(REPO, "launch", "baseline_urban.launch")
 

@@ -12,14 +12,13 @@ import json
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 import unittest
 
+from twin_tools.launch import run_util
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-import run_util  # noqa: E402
 
 LAUNCH = os.path.join(REPO, "launch", "hybrid_urban.launch")
 UNTIL = 40.0
@@ -38,7 +37,7 @@ def by_stamp(bag, topics):
 
 def summarise(out, *args):
     """summary.json of a run, with its launch arguments (name:=value) as `twin run` passes them."""
-    r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "postprocess.py"), out,
+    r = subprocess.run(["/usr/bin/python3", "-m", "twin_tools.report.postprocess", out,
                         "--scenario", "hybrid_urban"] + list(args), capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     with open(os.path.join(out, "summary.json")) as f:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Launch arguments of `twin run` (scripts/launch_args.py): every class of bad input is rejected
+"""Launch arguments of `twin run` (twin_tools.launch.args): every class of bad input is rejected
 before anything starts, naming the argument; numbers in scientific notation are normalised to
 the plain decimals roslaunch reads as numbers, never silently replaced by a default."""
 import os
@@ -7,11 +7,11 @@ import subprocess
 import unittest
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-TOOL = os.path.join(REPO, "scripts", "launch_args.py")
+TOOL = ["-m", "twin_tools.launch.args"]
 
 
 def check(*args, scenario="baseline_urban"):
-    r = subprocess.run(["/usr/bin/python3", TOOL, REPO, scenario, *args],
+    r = subprocess.run(["/usr/bin/python3", *TOOL, REPO, scenario, *args],
                        capture_output=True, text=True)
     return r.returncode, r.stdout.split(), r.stderr
 

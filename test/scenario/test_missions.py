@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The product's scenarios run to the end: baseline_urban and hybrid_urban with the map engine,
-as nodelets, the whole VECTO Urban mission at 0 and 40 degC (scripts/mission_reference.py:
+as nodelets, the whole VECTO Urban mission at 0 and 40 degC (twin_tools.references:
 SUITE_MISSIONS; 25 degC too with `scripts/twin references`), two at a time. Each asserts the
 mission invariants against what is independent of the run: the run ended "end of mission" at the cycle's last second; 121/121 stops served; the
 distance the cycle file gives; every balance of the summary closed (closure < 1e-9); no warning
@@ -11,16 +11,15 @@ fuel is below the baseline's at the same ambient. Finally each summary equals th
 (test/scenario/reference/missions) within mission_reference.REL_TOL."""
 import os
 import shutil
-import sys
 import tempfile
 import unittest
 
 import yaml
 
+from twin_tools import references as mr
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import mission_reference as mr  # noqa: E402
 
 CLOSURE_BOUND = 1e-9
 STOP_POSITION_TOL_KM = 0.01  # a stop is served within metres of its position (stop_service/)

@@ -20,11 +20,11 @@ import tempfile
 import time
 import unittest
 
+from twin_tools.launch import run_util
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 TWIN = os.path.join(REPO, "scripts", "twin")
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-import run_util  # noqa: E402
 
 UNTIL = "30"
 

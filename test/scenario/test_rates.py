@@ -6,34 +6,18 @@ everything at the 10 ms base step (a config copy). Compared: fuel, and the tempe
 coolant, the engine metal and the SCR brick at the end, and the SCR brick's time mean rise.
 The full mission: scripts/twin bench rates."""
 import os
-import shutil
-import sys
 import tempfile
 import unittest
 
+from twin_tools.bench.rates_config import all_fast_config
+from twin_tools.launch import run_util
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-import run_util  # noqa: E402
 
 LAUNCH = os.path.join(REPO, "launch", "baseline_urban.launch")
 UNTIL = 300.0
 AMBIENT_K = 298.15
-
-
-def all_fast_config(tmp):
-    cfg = os.path.join(tmp, "config")
-    shutil.copytree(os.path.join(REPO, "config"), cfg, ignore=shutil.ignore_patterns("data"))
-    os.symlink(os.path.join(REPO, "config", "data"), os.path.join(cfg, "data"))
-    for name, old, new in (("cooling.yaml", "macro_step_s: 0.1", "macro_step_s: 0.01"),
-                           ("aftertreatment.yaml", "macro_step_s: 0.1", "macro_step_s: 0.01")):
-        p = os.path.join(cfg, name)
-        with open(p) as f:
-            t = f.read()
-        assert old in t, (name, old)
-        with open(p, "w") as f:
-            f.write(t.replace(old, new, 1))
-    return cfg
 
 
 def series(bag):

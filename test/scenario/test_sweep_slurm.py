@@ -194,8 +194,8 @@ class SlurmSweep(unittest.TestCase):
             spec = os.path.join(cls.tmp, "tiny.yaml")
             with open(spec, "w") as f:
                 f.write(SPEC)
-            # sweep.py as `twin sweep` runs it after its setup (ctest runs after `twin test`'s setup)
-            sweep = ["/usr/bin/python3", os.path.join(REPO, "scripts", "sweep.py"), spec]
+            # the sweep as `twin sweep` runs it after its setup (ctest runs after `twin test`'s setup)
+            sweep = ["/usr/bin/python3", "-m", "twin_tools.sweep.cli", spec]
             env = dict(cls.cluster.env, HBT_SETUP_DONE="1")
             cls.slurm_out, cls.local_out = os.path.join(cls.tmp, "slurm"), os.path.join(cls.tmp, "local")
             cls.slurm = subprocess.run(sweep + ["--slurm", "--out", cls.slurm_out],

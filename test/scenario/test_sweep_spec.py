@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Sweep specs without running anything (scripts/sweep_spec.py, sweep_yaml.py, sweep_table.py,
-sweep_slurm.py): the example specs expand to their matrices; every kind of bad input is rejected
+"""Sweep specs without running anything (twin_tools.sweep: spec, config_edit, table,
+slurm): the example specs expand to their matrices; every kind of bad input is rejected
 before anything starts with a message naming the spec file and the key; a config key is set in a
 copy that differs from the original on that line only (never added when missing); the saving of a
 hybrid run is taken against the conventional run with the same parameters; the sbatch script
@@ -9,20 +9,19 @@ import json
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 import unittest
 
 import yaml
 
+from twin_tools.sweep import cli as sweep
+from twin_tools.sweep import config_edit as sweep_yaml
+from twin_tools.sweep import run as sweep_run
+from twin_tools.sweep import slurm as sweep_slurm
+from twin_tools.sweep import spec as sweep_spec
+from twin_tools.sweep import table as sweep_table
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import sweep  # noqa: E402
-import sweep_run  # noqa: E402
-import sweep_slurm  # noqa: E402
-import sweep_spec  # noqa: E402
-import sweep_table  # noqa: E402
-import sweep_yaml  # noqa: E402
 
 
 class SpecCase(unittest.TestCase):
@@ -127,7 +126,7 @@ class Rejected(SpecCase):
 
     def test_all_errors_at_once_and_cli_exit_status(self):
         p = self.spec(self.with_(jobs=0, vary={"ambient": [500]}, config={"battery.yaml": {"x": [1]}}))
-        r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "sweep.py"), "--check", p],
+        r = subprocess.run(["/usr/bin/python3", "-m", "twin_tools.sweep.cli", "--check", p],
                            capture_output=True, text=True)
         self.assertEqual(r.returncode, 2)
         self.assertEqual(len(r.stderr.strip().split("\n")), 3, r.stderr)
@@ -144,7 +143,7 @@ class Rejected(SpecCase):
     def test_out_folder_must_be_a_sweeps(self):
         os.makedirs(os.path.join(self.tmp, "other"))
         open(os.path.join(self.tmp, "other", "keep.txt"), "w").close()
-        r = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "sweep.py"),
+        r = subprocess.run(["/usr/bin/python3", "-m", "twin_tools.sweep.cli",
                             self.spec(self.base), "--out", os.path.join(self.tmp, "other")],
                            capture_output=True, text=True)
         self.assertEqual(r.returncode, 2)
@@ -218,7 +217,9 @@ class Table(unittest.TestCase):
         self.assertIn("#SBATCH --array=0-2%2\n", text)
         self.assertIn("#SBATCH --time=00:10:00\n", text)
         self.assertIn("#SBATCH --output=/o/slurm/task_%a.out\n", text)
-        self.assertTrue(text.rstrip().endswith('/r/scripts/sweep.py task /o/plan.json "$SLURM_ARRAY_TASK_ID"'))
+        self.assertIn("export PYTHONPATH=/r/python${PYTHONPATH:+:$PYTHONPATH}\n", text)
+        self.assertTrue(text.rstrip().endswith(
+            'exec /usr/bin/python3 -m twin_tools.sweep.cli task /o/plan.json "$SLURM_ARRAY_TASK_ID"'))
 
     def test_eta(self):
         # 2 finished (10 s, 20 s: mean 15 s), 3 waiting, one running for 5 s, 2 at a time

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""scripts/twin_units.py: the constants the scripts read from src/common/units.hpp equal the C++
+"""twin_tools.units: the constants the tools read from src/common/units.hpp equal the C++
 build's (printed by the print_units tool, whose path ctest passes as the first argument); a name
 without a `constexpr double NAME = NUMBER;` line is an error naming the file and the name."""
 import os
@@ -8,9 +8,9 @@ import sys
 import tempfile
 import unittest
 
+from twin_tools import units as twin_units
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import twin_units  # noqa: E402
 
 PRINT_UNITS = sys.argv.pop(1) if len(sys.argv) > 1 else None
 

@@ -6,34 +6,31 @@
   - replay: a short hybrid_urban bag through `scripts/twin replay BAG --start S --rate R`: the
     bus, the stops and every gauge colour, the hybrid's included;
   - `twin replay` rejects a bad --rate / --start / bag with exit status 2 and a message naming it.
-Colours are told apart by hue (scripts/viz_layout.py's palette; rviz shades faces but keeps
+Colours are told apart by hue (twin_tools.viz.layout's palette; rviz shades faces but keeps
 hues); the screen's unsaturated background, grid and text never count.
 Skipped (with a message) only when rviz or Xvfb is not installed (scripts/twin setup --viz)."""
 import os
 import shutil
 import signal
 import subprocess
-import sys
 import tempfile
 import time
 import unittest
 
 import numpy as np
 
+from twin_tools.launch import run_util
+from twin_tools.report import postprocess
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-import run_util  # noqa: E402
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import postprocess  # noqa: E402
 
 SCREEN = (1400, 900)
-# hue ranges (PIL HSV, 0..255) of the palette in scripts/viz_layout.py
+# hue ranges (PIL HSV, 0..255) of the palette in twin_tools.viz.layout
 HUES = {"red": [(0, 8), (248, 255)], "orange": [(14, 30)], "yellow": [(32, 44)], "green": [(80, 100)],
         "cyan": [(118, 136)], "blue": [(144, 164)], "purple": [(186, 210)]}
 MIN_PX = 300            # a gauge colour is present with at least this many pixels
 BUS_PX = (1500, 30000)  # the blue of the bus (12 m x 3 m at ~14 px/m, + the route-strip icon)
-
 
 VIEW = (0, 70, SCREEN[0], SCREEN[1] - 40)   # rviz's 3D view: the window without menu, tool and status bars
 

@@ -22,7 +22,7 @@ correction vanishes.
 """
 import numpy as np
 
-from twin_units import DIESEL_LHV_J_KG
+from twin_tools.units import DIESEL_LHV_J_KG
 
 J_PER_KWH = 3.6e6
 MODE_REGEN, MODE_STOPPED = 2, 4

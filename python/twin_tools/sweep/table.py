@@ -1,8 +1,8 @@
-"""The comparison table and plots of a sweep, from its runs' folders (scripts/sweep.py): one row
+"""The comparison table and plots of a sweep, from its runs' folders (twin_tools.sweep.cli): one row
 per run of OUT/plan.json with the varied parameters, ok/failed (+ the reason), and from the run's
-summary.json (scripts/postprocess.py) fuel, L/100 km, NOx, final SOC, warnings; fuel_saving_pct
+summary.json (twin_tools.report.postprocess) fuel, L/100 km, NOx, final SOC, warnings; fuel_saving_pct
 of a hybrid run against the conventional run with the same parameters (SOC-corrected,
-scripts/hybrid.py); the run's wall time (sweep_task.json). Written as OUT/sweep.csv (full
+twin_tools.report.hybrid); the run's wall time (sweep_task.json). Written as OUT/sweep.csv (full
 precision), OUT/sweep.md and OUT/plots/<quantity>.png (each quantity against the first numeric
 axis, one line per combination of the other parameters).
 """
@@ -11,11 +11,9 @@ import json
 import math
 import os
 import re
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import hybrid  # noqa: E402
-import sweep_run  # noqa: E402
+from twin_tools.report import hybrid
+from twin_tools.sweep import run as sweep_run
 
 # (column, summary key, format in the Markdown table, unit/meaning)
 QUANTITIES = [

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """scripts/twin replay BAG [--rate R] [--start S] [--no-rviz]: a run's bag played back under
 simulated time with the live view (launch/include/replay.launch: rosbag play publishing /clock,
 scripts/viz_node, rviz with config/twin.rviz) on its own ROS master on a free port.
@@ -23,10 +22,8 @@ import subprocess
 import sys
 import tempfile
 
-HERE = os.path.dirname(os.path.realpath(__file__))
-REPO = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
-from postprocess import RUN_INFO_TOPIC  # noqa: E402
+from twin_tools.paths import REPO
+from twin_tools.report.postprocess import RUN_INFO_TOPIC
 
 ROAD_STEP_M = 5.0
 
@@ -48,7 +45,7 @@ def positive_number(name, text):
 
 def read_bag(path):
     """(duration [s], road rows [(distance_m, altitude_m)], run_info dict or None)."""
-    from bag_input import BagError, open_bag
+    from twin_tools.bags.reader import BagError, open_bag
     try:
         bag = open_bag(path)
     except BagError as e:

@@ -1,5 +1,5 @@
 """One run of a sweep (a plain `scripts/twin run` into OUT/runs/<run-id>/) and the local pool
-that runs N of them at a time under one progress line (scripts/sweep.py).
+that runs N of them at a time under one progress line (twin_tools.sweep.cli).
 
 Each run has its own ROS master on its own port: the port comes from a range below the kernel's
 ephemeral ports (so no bind(0) of another program ever gets it), is locked for the whole run

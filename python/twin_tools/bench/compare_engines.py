@@ -1,9 +1,10 @@
-#!/usr/bin/python3
 """Map engine vs 1D engine on the same stretch of a mission: torque traces (requested and actual
 brake torque, from the bags by header.stamp), boost and fuel rate, plus a table of cumulative
 fuel, NOx and wall/simulated time from the two runs' summary.json.
 
-  scripts/compare_engines.py MAP_RUN_DIR ONED_RUN_DIR [--from S] [--to S] [-o torque_map_vs_1d.png]
+  python3 -m twin_tools.bench.compare_engines MAP_RUN_DIR ONED_RUN_DIR [--from S] [--to S]
+      [-o torque_map_vs_1d.png]     (in a shell with the devel space: eval "$(scripts/twin env)";
+                                    `scripts/twin bench 1d` draws it for its two runs)
 
 The 1D engine's torque gradients are smoothed by turbo lag and manifold filling; the map engine
 follows its request with the VECTO PT1 full-load build-up only.
@@ -31,7 +32,7 @@ def series(bag, topic, fields, t0, t1):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(prog="compare_engines", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("map_dir")
     ap.add_argument("oned_dir")
     ap.add_argument("--from", dest="t0", type=float, default=0.0)

@@ -23,8 +23,8 @@ import math
 from geometry_msgs.msg import Point
 from visualization_msgs.msg import Marker
 
-import viz_markers as vm
-from twin_units import DIESEL_LHV_J_KG
+from twin_tools.units import DIESEL_LHV_J_KG
+from twin_tools.viz import markers as vm
 
 K0 = 273.15
 BUS = (0.15, 0.45, 0.95)       # bus body (the pixel test looks for this blue)

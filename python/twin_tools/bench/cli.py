@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Benchmarks of the twin (full missions: minutes to hours; never part of the test suite).
 
   scripts/twin bench [map]          baseline_urban, map engine, full mission, mode nodes and
@@ -15,21 +14,25 @@
                                     one table per engine (fuel, warm-up, fan energy, charge air,
                                     light-off, engine-out and tailpipe NOx, balances, wall/sim);
                                     N runs at a time (default 1: wall/sim undisturbed)
-  scripts/twin bench hybrid [--engines map,1d] [--until S] [--jobs N]  issue 11's study:
+  scripts/twin bench hybrid [--engines map,1d] [--until S] [--jobs N]  the hybrid's saving:
                                     baseline_urban and hybrid_urban at 0, 25 and 40 degC for each
                                     engine (nodelets; the baseline with the same Gauss-Seidel
                                     torque chain [[vehicle, aftertreatment, cooling], [engine]] as
                                     the hybrid's, so both see the engine torque without delay);
-                                    one table per temperature (results/bench/hybrid.md) with the
-                                    SOC-corrected fuel saving (scripts/hybrid.py)
-  scripts/twin bench rates [--engines map] [--until S]  multi-rate stepping vs everything at the
-                                    10 ms base step (cooling macro step, ATS model step 0.01 s in a
-                                    config copy): fuel and temperature rises (issue 9, item 1)
+                                    one table per temperature with the SOC-corrected fuel
+                                    saving (twin_tools.report.hybrid)
+  scripts/twin bench rates [--engines map,1d] [--until S]  multi-rate stepping vs everything at
+                                    the 10 ms base step (cooling macro step, ATS model step 0.01 s
+                                    in a config copy): fuel and temperature rises
   scripts/twin bench cosim [--steps K]  the lock-step protocol alone: base steps per second for 3,
                                     5 and 8 probe participants (no model), nodelets and nodes, one
                                     rate / multi-rate / one Gauss-Seidel group per participant
-                                    (scripts/bench_cosim.py; K base steps per nodelets run, K/4 for nodes)
-Results: printed as a table and written to results/bench/<name>.json.
+                                    (twin_tools.bench.cosim; K base steps per nodelets run, K/4 for nodes)
+Results: printed as Markdown tables and written to docs/bench/<name>.md (name = the bench, with
+the engine for ambient, hybrid and rates: one file per engine) with the command, the date and the
+machine: commit it with the code it measured. A partial run (--until, --duration below 1800 s,
+--steps below the default) writes results/bench/<name>.md instead. The runs' numbers:
+results/bench/<name>.json.
 """
 import argparse
 import json
@@ -39,9 +42,10 @@ import subprocess
 import sys
 import time
 
-import bench_cosim
-
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from twin_tools.bench import cosim as bench_cosim
+from twin_tools.bench.docs import Measurement
+from twin_tools.bench.rates_config import all_fast_config
+from twin_tools.paths import REPO
 
 
 def run_scenario(scenario, out, args):
@@ -74,20 +78,20 @@ def bench_map(a):
         s = run_scenario("baseline_urban", out, args)
         if s:
             rows.append((mode, s))
-    print("\nbaseline_urban, map engine, ambient 25 C, macro step %s s" %
-          (rows[0][1]["macro_step_s"] if rows else "?"))
-    print("compute = the models' steps (steady clock); process CPU = user + system CPU from START to the end "
+    md = ["baseline_urban, map engine, aftertreatment and cooling, ambient 25 °C, macro step %s s%s." % (
+              rows[0][1]["macro_step_s"] if rows else "?", ", first %g s" % a.until if a.until else ", full mission"),
+          "compute = the models' steps (steady clock); process CPU = user + system CPU from START to the end "
           "of the processes hosting participants (nodelets: the one manager, the stepper's nodelet in it; "
-          "nodes: the stepper's own process not counted; roslaunch, rosmaster, rosout never)")
-    print("| mode | sim time [s] | wall time [s] | wall/sim | wall / summed compute | wall / participants' process CPU | steps/s | distance [km] | fuel [L/100km] | compute time per node [s] | process CPU [s] |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+          "nodes: the stepper's own process not counted; roslaunch, rosmaster, rosout never).", "",
+          "| mode | sim time [s] | wall time [s] | wall/sim | wall / summed compute | wall / participants' process CPU | steps/s | distance [km] | fuel [L/100km] | compute time per node [s] | process CPU [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|---|"]
     for mode, s in rows:
         steps = s["sim_time_s"] / s["macro_step_s"]
         compute = sum(s["compute_time_s"].values())
         procs = {", ".join(v["participants"]): v["cpu_s"] - v["cpu_at_start_s"]
                  for v in s["process_cpu_s"].values() if v["participants"] != ["stepper"]}
         cpu = sum(procs.values())
-        print("| %s | %.1f | %.1f | %.4f | %.2f | %.2f | %.0f | %.3f | %.2f | %s | %s |" % (
+        md.append("| %s | %.1f | %.1f | %.4f | %.2f | %.2f | %.0f | %.3f | %.2f | %s | %s |" % (
             mode, s["sim_time_s"], s["wall_time_s"], s["wall_time_s"] / s["sim_time_s"],
             s["wall_time_s"] / compute if compute > 0 else float("nan"),
             s["wall_time_s"] / cpu if cpu > 0 else float("nan"),
@@ -95,6 +99,8 @@ def bench_map(a):
             s.get("fuel_l_per_100km", float("nan")),
             ", ".join("%s %.1f" % kv for kv in sorted(s["compute_time_s"].items())),
             "; ".join("%s %.1f" % kv for kv in sorted(procs.items()))))
+    print("\n" + "\n".join(md))
+    a.measurement.write("map", "Map engine: wall time as nodes and as nodelets", md, bool(a.until))
     with open(os.path.join(REPO, "results", "bench", "map.json"), "w") as f:
         json.dump(dict(rows), f, indent=2)
     return 0 if len(rows) == 2 else 1
@@ -130,11 +136,15 @@ def bench_engine(a):
            "fuel_fsm_vs_tvd_pct": num(r"g: ([-+\d.]+) %")}
     with open(os.path.join(REPO, "results", "bench", "engine_whtc.json"), "w") as f:
         json.dump(res, f, indent=1)
-    print("| WHTC [s] | FSM CPU/sim | TVD CPU/sim | FSM/TVD cost | fuel FSM vs TVD |")
-    print("|---|---|---|---|---|")
-    print("| %.0f | %.4f | %.4f | %.1f %% | %+.2f %% |" % (
-        a.duration, res["fsm_cpu_per_sim"], res["tvd_cpu_per_sim"], res["fsm_over_tvd_cost_pct"],
-        res["fuel_fsm_vs_tvd_pct"]))
+    md = ["The 1D engine alone on the WHTC (GTR No. 4: speed imposed, torque requested), the FSM pipe "
+          "solver then the fine-mesh TVD reference on the same trace (engine_1d_whtc --bench).", "",
+          "| WHTC [s] | FSM CPU/sim | TVD CPU/sim | FSM/TVD cost | fuel FSM vs TVD |",
+          "|---|---|---|---|---|",
+          "| %.0f | %.4f | %.4f | %.1f %% | %+.2f %% |" % (
+              a.duration, res["fsm_cpu_per_sim"], res["tvd_cpu_per_sim"], res["fsm_over_tvd_cost_pct"],
+              res["fuel_fsm_vs_tvd_pct"])]
+    print("\n".join(md))
+    a.measurement.write("engine", "1D engine on the WHTC: FSM against TVD", md, a.duration < 1800.0)
     return 0
 
 
@@ -152,20 +162,23 @@ def bench_1d(a):
         if s:
             rows.append((engine, s))
             outs[engine] = out
-    print("\nbaseline_urban, ambient 25 C, mode nodelets: map engine vs 1D engine (FSM)")
-    print("| engine | sim time [s] | wall/sim | engine compute/sim | wall / engine compute | other participants' compute/sim | distance [km] | fuel [kg] | fuel [L/100km] | NOx engine-out [g] |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    md = ["baseline_urban (aftertreatment and cooling), ambient 25 °C, nodelets%s: map engine against "
+          "the 1D engine (FSM)." % (", first %g s" % a.until if a.until else ", full mission"), "",
+          "| engine | sim time [s] | wall/sim | engine compute/sim | wall / engine compute | other participants' compute/sim | distance [km] | fuel [kg] | fuel [L/100km] | NOx engine-out [g] |",
+          "|---|---|---|---|---|---|---|---|---|---|"]
     for engine, s in rows:
         c = s["compute_time_s"]
         ce = c.get("engine", float("nan"))
-        print("| %s | %.1f | %.4f | %.4f | %.3f | %.4f | %.3f | %.3f | %.2f | %s |" % (
+        md.append("| %s | %.1f | %.4f | %.4f | %.3f | %.4f | %.3f | %.3f | %.2f | %s |" % (
             engine, s["sim_time_s"], s["wall_time_s"] / s["sim_time_s"], ce / s["sim_time_s"],
             s["wall_time_s"] / ce, sum(v for k, v in c.items() if k != "engine") / s["sim_time_s"],
             s.get("distance_km", float("nan")),
             s.get("fuel_kg", float("nan")), s.get("fuel_l_per_100km", float("nan")),
             "%.1f" % s["nox_engine_out_g"] if "nox_engine_out_g" in s else "-"))
+    print("\n" + "\n".join(md))
+    a.measurement.write("1d", "Map engine against 1D engine (FSM)", md, bool(a.until))
     if len(outs) == 2:
-        subprocess.call([sys.executable, os.path.join(REPO, "scripts", "compare_engines.py"),
+        subprocess.call([sys.executable, "-m", "twin_tools.bench.compare_engines",
                          outs["map"], outs["1d"], "--from", "40", "--to", "120"])
     with open(os.path.join(REPO, "results", "bench", "engine.json"), "w") as f:
         json.dump(dict(rows), f, indent=2)
@@ -173,7 +186,7 @@ def bench_1d(a):
 
 
 def bench_ambient(a):
-    """Issue 10 acceptance: the baseline at 0, 25 and 40 degC with each engine (nodelets)."""
+    """The baseline at 0, 25 and 40 degC with each engine (nodelets)."""
     from concurrent.futures import ThreadPoolExecutor
     engines = [e for e in a.engines.split(",") if e]
     jobs = []
@@ -195,18 +208,22 @@ def bench_ambient(a):
             ("mean_back_pressure_kpa", "back-pressure [kPa]", "%.2f"),
             ("cooling_balance_closure", "cooling balance", "%.1e"), ("ats_balance_closure", "ATS balance", "%.1e")]
     for engine in engines:
-        print("\nbaseline_urban, %s engine, aftertreatment + cooling, nodelets" % engine)
-        print("| ambient | " + " | ".join(c[1] for c in cols) + " | wall/sim |")
-        print("|---" * (len(cols) + 2) + "|")
+        md = ["baseline_urban, %s engine, aftertreatment + cooling, nodelets, cold start at the ambient "
+              "temperature%s; %d run(s) at a time (wall/sim is that of runs sharing the machine when more "
+              "than one)." % (engine, ", first %g s" % a.until if a.until else ", full mission", max(1, a.jobs)), "",
+              "| ambient | " + " | ".join(c[1] for c in cols) + " | wall/sim |",
+              "|---" * (len(cols) + 2) + "|"]
         for (e, amb), s in results:
             if e != engine:
                 continue
             if s is None:
-                print("| %d °C | run failed |" % amb)
+                md.append("| %d °C | run failed |" % amb)
                 continue
             table["%s_%d" % (e, amb)] = s
             cells = [(c[2] % s[c[0]]) if c[0] in s else "-" for c in cols]
-            print("| %d °C | %s | %.4f |" % (amb, " | ".join(cells), s["wall_time_s"] / s["sim_time_s"]))
+            md.append("| %d °C | %s | %.4f |" % (amb, " | ".join(cells), s["wall_time_s"] / s["sim_time_s"]))
+        print("\n" + "\n".join(md))
+        a.measurement.write("ambient_%s" % engine, "Baseline at 0, 25 and 40 °C, %s engine" % engine, md, bool(a.until))
     with open(os.path.join(REPO, "results", "bench", "ambient.json"), "w") as f:
         json.dump(table, f, indent=2)
     return 0 if all(s for _, s in results) else 1
@@ -230,7 +247,7 @@ HYBRID_ROWS = [("fuel_kg", "fuel [kg]", "%.3f"), ("fuel_soc_corrected_kg", "fuel
 
 
 def bench_hybrid(a):
-    """Issue 11 acceptance: baseline vs hybrid at 0, 25 and 40 degC with each engine (nodelets)."""
+    """Baseline vs hybrid at 0, 25 and 40 degC with each engine (nodelets)."""
     from concurrent.futures import ThreadPoolExecutor
     engines = [e for e in a.engines.split(",") if e]
     jobs = []
@@ -252,7 +269,7 @@ def bench_hybrid(a):
         for amb in (0, 25, 40):
             (bo, bs), (ho, hs) = results[(engine, amb, "baseline_urban")], results[(engine, amb, "hybrid_urban")]
             if bs and hs:
-                subprocess.call([sys.executable, os.path.join(REPO, "scripts", "postprocess.py"), ho,
+                subprocess.call([sys.executable, "-m", "twin_tools.report.postprocess", ho,
                                  "--bag", os.path.join(ho, "run.bag"), "--baseline", os.path.join(bo, "summary.json")],
                                 stdout=subprocess.DEVNULL)
                 with open(os.path.join(ho, "summary.json")) as f:
@@ -260,12 +277,12 @@ def bench_hybrid(a):
                     hs.clear()
                     hs.update(json.load(f))
                     hs["compute_time_s"] = cpu
-    lines = ["# Baseline vs 48 V P1 hybrid, VECTO Urban, full mission%s" % (" (first %g s)" % a.until if a.until else ""), "",
-             "Produced by `scripts/twin bench hybrid --engines %s --jobs %d`; nodelets; both runs of a pair with the"
-             " torque chain stepped without delay (Gauss-Seidel groups). Saving = (baseline fuel - hybrid fuel"
-             " corrected for the battery's energy change) / baseline fuel (scripts/hybrid.py)." % (a.engines, a.jobs), ""]
     table = {}
     for engine in engines:
+        lines = ["VECTO Urban%s, nodelets, %d run(s) at a time; both runs of a pair with the torque chain stepped "
+                 "without delay (Gauss-Seidel groups). Saving = (baseline fuel - hybrid fuel corrected for the "
+                 "battery's energy change) / baseline fuel (twin_tools.report.hybrid)." % (
+                     " (first %g s)" % a.until if a.until else ", full mission", max(1, a.jobs)), ""]
         for amb in (0, 25, 40):
             bs, hs = results[(engine, amb, "baseline_urban")][1], results[(engine, amb, "hybrid_urban")][1]
             lines += ["## %s engine, %d °C" % (engine, amb), "", "| quantity | baseline | hybrid |", "|---|---|---|"]
@@ -277,20 +294,17 @@ def bench_hybrid(a):
                     table["%s_%s_%d" % (name, engine, amb)] = s
             wall = lambda s: ("%.4f" % (s["wall_time_s"] / s["sim_time_s"])) if s else "-"
             lines += ["| wall/sim | %s | %s |" % (wall(bs), wall(hs)), ""]
-    text = "\n".join(lines) + "\n"
-    print(text)
-    with open(os.path.join(REPO, "results", "bench", "hybrid.md"), "w") as f:
-        f.write(text)
+        print("\n".join(lines))
+        a.measurement.write("hybrid_%s" % engine, "Baseline against 48 V P1 hybrid at 0, 25 and 40 °C, %s engine" % engine,
+                            lines, bool(a.until))
     with open(os.path.join(REPO, "results", "bench", "hybrid.json"), "w") as f:
         json.dump(table, f, indent=2)
     return 0 if all(s for _, s in results.values()) else 1
 
 
 def bench_rates(a):
-    """Issue 9 item 1: the documented rates vs all at 10 ms, full mission, nodelets."""
+    """The documented rates vs all at 10 ms, full mission, nodelets."""
     import shutil
-    sys.path.insert(0, os.path.join(REPO, "test", "scenario"))
-    from test_rates import all_fast_config  # the same config edit as the test
     tmp = os.path.join(REPO, "results", "bench", "rates_config")
     shutil.rmtree(tmp, ignore_errors=True)
     os.makedirs(tmp)
@@ -305,32 +319,39 @@ def bench_rates(a):
                 args.append("until:=%g" % a.until)
             res[name] = run_scenario("baseline_urban", out, args)
         rows.append((engine, res))
-    print("\n| engine | quantity | multi-rate | all 10 ms | difference |")
-    print("|---|---|---|---|---|")
     for engine, res in rows:
+        md = ["baseline_urban, %s engine, nodelets%s: the documented rates (cooling and aftertreatment "
+              "nodes at 0.1 s) against everything at the 10 ms base step (a config copy: "
+              "twin_tools.bench.rates_config)." % (engine, ", first %g s" % a.until if a.until else ", full mission"), "",
+              "| engine | quantity | multi-rate | all 10 ms | difference |", "|---|---|---|---|---|"]
         m, f = res["multirate"], res["all_10ms"]
         if not (m and f):
-            print("| %s | run failed | | | |" % engine)
-            continue
-        for key in ("fuel_kg", "warmup_s", "ats_lightoff_s", "nox_tailpipe_g", "fan_kwh"):
-            if key in m and key in f and f[key]:
-                print("| %s | %s | %.4f | %.4f | %+.3f %% |" % (engine, key, m[key], f[key], 100 * (m[key] / f[key] - 1)))
-        print("| %s | wall/sim | %.4f | %.4f | |" % (engine, m["wall_time_s"] / m["sim_time_s"], f["wall_time_s"] / f["sim_time_s"]))
+            md.append("| %s | run failed | | | |" % engine)
+        else:
+            for key in ("fuel_kg", "warmup_s", "ats_lightoff_s", "nox_tailpipe_g", "fan_kwh"):
+                if key in m and key in f and f[key]:
+                    md.append("| %s | %s | %.4f | %.4f | %+.3f %% |" % (engine, key, m[key], f[key], 100 * (m[key] / f[key] - 1)))
+            md.append("| %s | wall/sim | %.4f | %.4f | |" % (engine, m["wall_time_s"] / m["sim_time_s"], f["wall_time_s"] / f["sim_time_s"]))
+        print("\n" + "\n".join(md))
+        a.measurement.write("rates_%s" % engine, "Multi-rate stepping against everything at 10 ms, %s engine" % engine,
+                            md, bool(a.until))
     with open(os.path.join(REPO, "results", "bench", "rates.json"), "w") as fh:
         json.dump({e: r for e, r in rows}, fh, indent=2)
     return 0 if all(r["multirate"] and r["all_10ms"] for _, r in rows) else 1
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__)
+    ap = argparse.ArgumentParser(prog="twin bench", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient", "hybrid", "rates", "cosim"])
     ap.add_argument("--engines", default="map,1d", help="ambient, hybrid: engine models, comma-separated")
     ap.add_argument("--jobs", type=int, default=1, help="ambient, hybrid: runs at a time")
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     ap.add_argument("--duration", type=float, default=1800.0,
                     help="engine: WHTC seconds to run (default the whole 1800 s)")
-    ap.add_argument("--steps", type=int, default=200000, help="cosim: base steps per nodelets run")
+    ap.add_argument("--steps", type=int, default=bench_cosim.FULL_STEPS, help="cosim: base steps per nodelets run")
     a = ap.parse_args()
+    a.measurement = Measurement(sys.argv[1:])
     if a.what == "cosim":
         return bench_cosim.bench_cosim(a, REPO)
     return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient, "hybrid": bench_hybrid, "rates": bench_rates}[a.what](a)

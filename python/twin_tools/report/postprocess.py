@@ -1,18 +1,19 @@
-#!/usr/bin/python3
 """Results of one run of the twin: summary.json, report.md and PNG plots, computed from the bag
 alone (analysed by header.stamp).
 
-  postprocess.py DIR --scenario NAME [name:=value ...]   end of a run (scripts/twin run): stores
+  python3 -m twin_tools.report.postprocess DIR --scenario NAME [name:=value ...]
+      end of a run (scripts/twin run): stores
       the run's metadata in DIR/run.bag as topic /twin/run_info (std_msgs/String, JSON: scenario,
       launch arguments, DIR/status.json of the stepper, DIR/stops.csv), then reports from the bag
-  postprocess.py --bag BAG [--out DIR]                   scripts/twin report: the same report from
+  python3 -m twin_tools.report.postprocess --bag BAG [--out DIR]
+      scripts/twin report: the same report from
       any bag a run wrote (default DIR = the bag's folder); identical output
 The participants' warnings (summary key `warnings`) and step compute times (report.md only) come
-from diagnostics.bag beside the bag (scripts/diagnostics.py); without it the report says so.
+from diagnostics.bag beside the bag (twin_tools.report.diagnostics); without it the report says so.
 Exit status: 0 if the run completed, 1 if it was aborted (the message names the failing node).
 
 Fuel: diesel, density and lower heating value as src/common/units.hpp defines them (with their
-sources; read by twin_units.py).
+sources; read by twin_tools.units).
 """
 import argparse
 import json
@@ -22,13 +23,9 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import diagnostics  # noqa: E402
-import ledger  # noqa: E402
-import thermal  # noqa: E402
-import hybrid  # noqa: E402
-from twin_units import DIESEL_DENSITY_KG_L  # noqa: E402
-from bag_input import BagError, open_bag  # noqa: E402
+from twin_tools.bags.reader import BagError, open_bag
+from twin_tools.report import diagnostics, hybrid, ledger, thermal
+from twin_tools.units import DIESEL_DENSITY_KG_L
 
 J_PER_KWH = 3.6e6
 

@@ -1,5 +1,4 @@
-#!/usr/bin/python3
-"""`scripts/twin bench cosim`: the lock-step protocol alone (issue 9, item 8).
+"""`scripts/twin bench cosim`: the lock-step protocol alone.
 
 N probe participants (src/cosim/probe_participant.hpp: no model; each reads the previous one's
 output, the first reads the last: a ring) under the master stepper, without recorder, in a
@@ -20,6 +19,7 @@ import subprocess
 import sys
 
 DT_S = 0.01
+FULL_STEPS = 200000  # base steps per nodelets run of the full benchmark (the default of --steps)
 
 
 def launch_xml(n, mode, variant, out, until_s):
@@ -98,15 +98,21 @@ def bench_cosim(a, repo):
                 rows.append((mode, variant, n, r))
                 print("bench cosim: %-8s %-9s N=%d  %s" % (mode, variant, n, "failed" if r is None else
                       "%8.0f base steps/s" % r["steps_per_s"]), file=sys.stderr, flush=True)
-    print("\n| mode | variant | participants | base steps | wall [s] | base steps/s | participants' compute time / wall |")
-    print("|---|---|---|---|---|---|---|")
+    md = ["The lock-step protocol alone: N probe participants (no model) in a ring under the master stepper, "
+          "no recorder; %d base steps of %g s per nodelets run, %d per nodes run. jacobi: one group at the "
+          "base step; multirate: every second probe at 10 base steps; ordered: one Gauss-Seidel group per "
+          "probe (the longest chain)." % (steps, DT_S, max(steps // 4, 1000)), "",
+          "| mode | variant | participants | base steps | wall [s] | base steps/s | participants' compute time / wall |",
+          "|---|---|---|---|---|---|---|"]
     for mode, variant, n, r in rows:
         if r is None:
-            print("| %s | %s | %d | failed (see results/bench/cosim/%s_%s_%d/roslaunch.log) | | | |"
-                  % (mode, variant, n, mode, variant, n))
+            md.append("| %s | %s | %d | failed (see results/bench/cosim/%s_%s_%d/roslaunch.log) | | | |"
+                      % (mode, variant, n, mode, variant, n))
         else:
-            print("| %s | %s | %d | %d | %.2f | %.0f | %.2f |" % (mode, variant, n, r["steps"], r["wall_s"],
-                                                               r["steps_per_s"], r["compute_s"] / r["wall_s"]))
+            md.append("| %s | %s | %d | %d | %.2f | %.0f | %.2f |" % (mode, variant, n, r["steps"], r["wall_s"],
+                                                                   r["steps_per_s"], r["compute_s"] / r["wall_s"]))
+    print("\n" + "\n".join(md))
+    a.measurement.write("cosim", "The lock-step protocol alone: base steps per second", md, steps < FULL_STEPS)
     with open(os.path.join(repo, "results", "bench", "cosim.json"), "w") as fh:
         json.dump([{"mode": m, "variant": v, "participants": n, "result": r} for m, v, n, r in rows], fh, indent=2)
     return 0 if all(r is not None for *_, r in rows) else 1

@@ -1,5 +1,5 @@
-"""A sweep as a Slurm job array (scripts/sweep.py --slurm): task k = run k of OUT/plan.json, run
-by `sweep.py task OUT/plan.json k` (the same code as a local run: `twin run` into
+"""A sweep as a Slurm job array (`twin sweep --slurm`): task k = run k of OUT/plan.json, run
+by `python3 -m twin_tools.sweep.cli task OUT/plan.json k` (the same code as a local run: `twin run` into
 OUT/runs/<run-id>/ on its own ROS master), at most `jobs` tasks at a time (`--array=0-(N-1)%jobs`).
 OUT and the repository must be visible at the same path on the compute nodes (a shared file
 system). The sweep waits for the array to leave the queue (squeue polling, one progress line),
@@ -12,14 +12,14 @@ import subprocess
 import sys
 import time
 
-import sweep_run
+from twin_tools.sweep import run as sweep_run
 
 
 def script(plan, jobs, options):
     """Text of the sbatch script."""
     out, n = plan["out"], len(plan["runs"])
     lines = ["#!/bin/bash",
-             "# hybrid_bus_twin sweep %s: %d runs (written by scripts/sweep.py --slurm)" % (plan["name"], n),
+             "# hybrid_bus_twin sweep %s: %d runs (written by scripts/twin sweep --slurm)" % (plan["name"], n),
              "#SBATCH --job-name=hbt_sweep_%s" % plan["name"],
              "#SBATCH --array=0-%d%%%d" % (n - 1, jobs),
              "#SBATCH --output=%s" % os.path.join(out, "slurm", "task_%a.out"),
@@ -27,8 +27,9 @@ def script(plan, jobs, options):
              "#SBATCH --ntasks=1"]
     lines += ["#SBATCH --%s=%s" % kv for kv in sorted(options.items())]
     lines += ["set -eu",
-              "exec /usr/bin/python3 %s task %s \"$SLURM_ARRAY_TASK_ID\"" % (
-                  shlex.quote(os.path.join(plan["repo"], "scripts", "sweep.py")),
+              # the package from the repository itself: a compute node's shell has no devel space
+              "export PYTHONPATH=%s${PYTHONPATH:+:$PYTHONPATH}" % shlex.quote(os.path.join(plan["repo"], "python")),
+              "exec /usr/bin/python3 -m twin_tools.sweep.cli task %s \"$SLURM_ARRAY_TASK_ID\"" % (
                   shlex.quote(os.path.join(out, "plan.json")))]
     return "\n".join(lines) + "\n"
 

@@ -10,8 +10,9 @@ number) raises LookupError naming the file and the name.
 import os
 import re
 
-UNITS_HPP = os.path.join(os.path.dirname(os.path.dirname(os.path.realpath(__file__))),
-                         "src", "common", "units.hpp")
+from twin_tools.paths import REPO
+
+UNITS_HPP = os.path.join(REPO, "src", "common", "units.hpp")
 _LINE = re.compile(r"^\s*constexpr\s+double\s+(\w+)\s*=\s*([^;]*?)\s*;")
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 

@@ -1,15 +1,17 @@
-#!/usr/bin/python3
 """Parameter sweeps of the twin: a matrix of scenarios (scripts/twin sweep).
 
-  sweep.py SPEC.yaml [--out DIR] [--jobs N] [--slurm] [name:=value ...]
-      checks the whole spec (scripts/sweep_spec.py), writes DIR/plan.json and every run's config
+  twin sweep SPEC.yaml [--out DIR] [--jobs N] [--slurm] [name:=value ...]
+      checks the whole spec (twin_tools.sweep.spec), writes DIR/plan.json and every run's config
       copy, runs each entry with `twin run` into DIR/runs/<run-id>/ (its own ROS master and port),
       N at a time on this machine under one progress line, or with --slurm as a Slurm job array
-      (scripts/sweep_slurm.py); then DIR/sweep.csv, DIR/sweep.md and DIR/plots/ (scripts/sweep_table.py).
+      (twin_tools.sweep.slurm); then DIR/sweep.csv, DIR/sweep.md and DIR/plots/ (twin_tools.sweep.table).
       name:=value: launch arguments for every run (override the spec's `fixed`), e.g. until:=300.
-  sweep.py --check SPEC.yaml [...]   only the checks (scripts/twin sweep runs them before setup)
-  sweep.py task PLAN.json INDEX      one run of a plan (what each Slurm array task runs)
-  sweep.py table DIR                 the table and plots again from DIR/plan.json and the runs
+  python3 -m twin_tools.sweep.cli --check SPEC.yaml [...]   only the checks (scripts/twin sweep
+                                     runs them before setup)
+  python3 -m twin_tools.sweep.cli task PLAN.json INDEX      one run of a plan (what each Slurm
+                                     array task runs)
+  python3 -m twin_tools.sweep.cli table DIR                 the table and plots again from
+                                     DIR/plan.json and the runs
 Exit status: 0 every run ok, 1 a run failed (the table says which and why), 2 a bad spec or
 command line (nothing started).
 """
@@ -20,13 +22,12 @@ import shutil
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import sweep_run  # noqa: E402
-import sweep_spec  # noqa: E402
-import sweep_table  # noqa: E402
-import sweep_yaml  # noqa: E402
+from twin_tools.paths import REPO
+from twin_tools.sweep import config_edit as sweep_yaml
+from twin_tools.sweep import run as sweep_run
+from twin_tools.sweep import spec as sweep_spec
+from twin_tools.sweep import table as sweep_table
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SWEEP_FILES = ("plan.json", "sweep.csv", "sweep.md", "timing.json")
 SWEEP_DIRS = ("runs", "plots", "slurm")
 
@@ -108,7 +109,7 @@ def main_sweep(argv):
     t0 = time.time()
     timing = {"jobs": spec.jobs, "slurm_job": None}
     if a.slurm:
-        import sweep_slurm
+        from twin_tools.sweep import slurm as sweep_slurm
         try:
             timing["slurm_job"] = sweep_slurm.run_slurm(plan, spec.jobs, spec.slurm)
         except RuntimeError as e:
@@ -134,7 +135,7 @@ def report(plan, timing):
 def main(argv):
     if argv[:1] == ["task"]:
         if len(argv) != 3 or not argv[2].isdigit():
-            fail("usage: sweep.py task PLAN.json INDEX")
+            fail("usage: python3 -m twin_tools.sweep.cli task PLAN.json INDEX")
         with open(argv[1]) as f:
             plan = json.load(f)
         i = int(argv[2])
@@ -145,7 +146,7 @@ def main(argv):
         return 0 if rc == 0 else 1
     if argv[:1] == ["table"]:
         if len(argv) != 2:
-            fail("usage: sweep.py table DIR")
+            fail("usage: python3 -m twin_tools.sweep.cli table DIR")
         p = os.path.join(argv[1], "plan.json")
         if not os.path.exists(p):
             fail("%s: no plan.json (not a sweep's folder)" % argv[1])

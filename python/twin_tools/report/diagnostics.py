@@ -18,7 +18,7 @@ def read_diagnostics(run_bag):
     path = os.path.join(os.path.dirname(os.path.abspath(run_bag)), DIAGNOSTICS_BAG)
     if not os.path.exists(path):
         return None
-    from bag_input import open_bag
+    from twin_tools.bags.reader import open_bag
     nodes = {}
     with open_bag(path) as bag:
         for _, msg, _ in bag.read_messages(topics=["/diagnostics"]):

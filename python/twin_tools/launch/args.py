@@ -1,9 +1,8 @@
-#!/usr/bin/python3
 """Checks the name:=value arguments of `twin run` before anything starts, and writes them back
 normalised (numbers in plain decimal notation, which roslaunch's substitution args always read
 as numbers: `step:=1e-3` becomes `step:=0.001`).
 
-Usage: launch_args.py REPO SCENARIO name:=value ...   -> one normalised name:=value per line
+Usage: python3 -m twin_tools.launch.args REPO SCENARIO name:=value ...   -> one normalised name:=value per line
 Exit 1 with a message naming the argument when one is unknown, mistyped or out of range.
 """
 import math

@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from twin_units import DIESEL_LHV_J_KG
+from twin_tools.units import DIESEL_LHV_J_KG
 
 J_PER_KWH = 3.6e6
 # When the bus stands still at a stop: config/mission.yaml stop_service/ (hbt::mission::StopService),

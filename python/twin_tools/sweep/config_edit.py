@@ -1,5 +1,5 @@
 """Setting one existing key of a YAML config file in a run's copy of the config folder
-(scripts/sweep.py, the `config:` part of a sweep spec).
+(twin_tools.sweep.cli, the `config:` part of a sweep spec).
 
 A key is a path of mapping keys joined by '/', e.g. `pack/cells_in_parallel` in battery.yaml; a
 list element is addressed by its index (`driveline/gear_ratios/0`). A key that the file does not

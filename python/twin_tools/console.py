@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Console filter of `twin run`: passes roslaunch's output through unchanged (progress lines
 included, segment by segment) except the lines roslaunch prints when the master stepper ends a
 run normally by exiting as a required node ("REQUIRED process [stepper-N] has died!", "Initiating

@@ -1,10 +1,10 @@
 """A sweep spec (YAML) checked as a whole and expanded into its runs, before anything starts
-(scripts/sweep.py). Format (config/sweeps/ambient_study.yaml is an example):
+(twin_tools.sweep.cli). Format (config/sweeps/ambient_study.yaml is an example):
 
   scenarios: [baseline_urban, hybrid_urban]   # launch/<name>.launch; the scenario sets the architecture
   jobs: 2                   # runs at a time on this machine (CLI --jobs wins); Slurm: the array's throttle
   out: results/sweeps/NAME  # results folder, relative to the repository (CLI --out wins)
-  fixed:                    # launch arguments of every run (scripts/launch_args.py): name: value
+  fixed:                    # launch arguments of every run (twin_tools.launch.args): name: value
     until: 300
   vary:                     # launch arguments, each a list of values: one axis of the matrix
     ambient: [0, 25, 40]
@@ -23,13 +23,11 @@ message naming the spec file and the key. Paths in the spec are relative to the 
 import itertools
 import os
 import re
-import sys
 
 import yaml
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import launch_args  # noqa: E402
-import sweep_yaml  # noqa: E402
+from twin_tools.launch import args as launch_args
+from twin_tools.sweep import config_edit as sweep_yaml
 
 TOP_KEYS = ("scenarios", "jobs", "out", "fixed", "vary", "config", "slurm")
 SLURM_KEYS = ("partition", "time", "cpus-per-task", "mem", "account", "qos", "constraint", "nodes")

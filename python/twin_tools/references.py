@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The shipped scenarios' full missions and their stored summaries.
 
 Each mission of MISSIONS (baseline_urban and hybrid_urban, map engine, nodelets, the scenario's
@@ -24,8 +23,9 @@ import sys
 import tempfile
 import threading
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(HERE)
+from twin_tools.launch import run_util  # the tests' launcher: its own master on a free port
+from twin_tools.paths import REPO
+
 REFERENCE_DIR = os.path.join(REPO, "test", "scenario", "reference", "missions")
 SCENARIOS = ("baseline_urban", "hybrid_urban")
 AMBIENTS_C = (0, 25, 40)
@@ -45,9 +45,6 @@ ROUND_OFF_MARKERS = ("closure", "residual")
 # the run's wall time without progress before it is aborted [s]: generous, two runs share 2 cores
 RUN_TIMEOUT_S = 10.0
 
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-import run_util  # noqa: E402  (the tests' launcher: its own master on a free port)
-
 
 def name(scenario, ambient_c):
     return "%s_%dC" % (scenario, ambient_c)
@@ -63,11 +60,11 @@ def launch_arguments(ambient_c):
 
 
 def summarise(scenario, ambient_c, out_dir):
-    """summary.json of a finished run, written by scripts/postprocess.py with the run's launch
+    """summary.json of a finished run, written by twin_tools.report.postprocess with the run's launch
     arguments as `twin run` does; returns it."""
     import subprocess
     args = ["%s:=%s" % kv for kv in launch_arguments(ambient_c).items()]
-    r = subprocess.run(["/usr/bin/python3", os.path.join(HERE, "postprocess.py"), out_dir,
+    r = subprocess.run(["/usr/bin/python3", "-m", "twin_tools.report.postprocess", out_dir,
                         "--scenario", scenario] + args, capture_output=True, text=True)
     if r.returncode != 0:
         raise RuntimeError("postprocess of %s failed: %s" % (out_dir, r.stderr))
@@ -161,7 +158,7 @@ def read_reference(scenario, ambient_c):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap = argparse.ArgumentParser(prog="twin references", description=__doc__.split("\n\n")[0])
     ap.add_argument("--update", action="store_true", help="write the references from these runs")
     ap.add_argument("--only", default="", help="comma-separated mission names, e.g. hybrid_urban_40C")
     ap.add_argument("--jobs", type=int, default=2, help="missions at a time (default 2)")

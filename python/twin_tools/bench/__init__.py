@@ -1,0 +1,1 @@
+"""The benchmarks of `twin bench` (cli) and their helpers."""

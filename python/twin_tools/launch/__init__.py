@@ -1,0 +1,1 @@
+"""Launch arguments and launching a launch file on its own ROS master."""

@@ -1,0 +1,1 @@
+"""The report of a run: summary.json, report.md and plots (postprocess) and its parts."""
