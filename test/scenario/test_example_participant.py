@@ -12,16 +12,12 @@ its YAML, its plugin entry) joins baseline_urban for 240 s, as a nodelet and as 
   the run naming that file and the key."""
 import os
 import shutil
-import sys
 import tempfile
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(REPO, "test", "cosim"))
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import run_util  # noqa: E402
-import twin_units  # noqa: E402
+from twin_tools import units as twin_units
+from twin_tools.launch import run_util
+from twin_tools.paths import REPO
 
 EXAMPLE = os.path.join(REPO, "test", "example_participant")
 LAUNCH = os.path.join(EXAMPLE, "trip_computer.launch")

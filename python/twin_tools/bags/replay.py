@@ -24,6 +24,10 @@ import tempfile
 
 from twin_tools.paths import REPO
 from twin_tools.report.postprocess import RUN_INFO_TOPIC
+from twin_tools import wiring
+
+# topics (twin_tools.wiring: the participants' topics.yaml)
+VEHICLE_STATE = wiring.topic("vehicle", "state")
 
 ROAD_STEP_M = 5.0
 
@@ -52,11 +56,11 @@ def read_bag(path):
         fail(str(e))
     with bag:
         topics = bag.get_type_and_topic_info().topics
-        if "/vehicle/state" not in topics:
+        if VEHICLE_STATE not in topics:
             fail("%s has no /vehicle/state (topics: %s)" % (path, ", ".join(sorted(topics)) or "none"))
         duration = bag.get_end_time() - bag.get_start_time()
         road, alt, last_s, last_row = [], 0.0, None, None
-        for _, m, _ in bag.read_messages(topics=["/vehicle/state"]):
+        for _, m, _ in bag.read_messages(topics=[VEHICLE_STATE]):
             s = m.distance_m
             if last_s is not None:
                 alt += (s - last_s) * m.grade_percent / 100.0

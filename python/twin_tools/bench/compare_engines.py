@@ -16,6 +16,11 @@ import sys
 
 import numpy as np
 import rosbag
+from twin_tools import wiring
+
+# topics (twin_tools.wiring: the participants' topics.yaml)
+ENGINE_STATE = wiring.topic("engine", "state")
+VEHICLE_ENGINE_COMMAND = wiring.topic("vehicle", "engine_command")
 
 
 def series(bag, topic, fields, t0, t1):
@@ -43,8 +48,8 @@ def main():
     data = {}
     for k, d in runs.items():
         bag = os.path.join(d, "run.bag")
-        data[k] = (series(bag, "/engine/state", ["brake_torque_nm", "boost_pressure_pa", "fuel_mass_flow_kg_s", "engine_speed_rad_s"], a.t0, a.t1),
-                   series(bag, "/vehicle/engine_command", ["torque_request_nm"], a.t0, a.t1))
+        data[k] = (series(bag, ENGINE_STATE, ["brake_torque_nm", "boost_pressure_pa", "fuel_mass_flow_kg_s", "engine_speed_rad_s"], a.t0, a.t1),
+                   series(bag, VEHICLE_ENGINE_COMMAND, ["torque_request_nm"], a.t0, a.t1))
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

@@ -10,6 +10,8 @@ import os
 import sys
 from decimal import Decimal
 
+from twin_tools import wiring
+
 
 def number(lo, hi, integer=False):
     def check(v, repo, config=None):
@@ -82,7 +84,7 @@ ARGS = {
 
 # the participants that may run on another host (the stepper and the recorder stay with the
 # master and the results folder); which exist depends on the architecture and `thermal`
-PARTICIPANTS = ("vehicle", "engine", "aftertreatment", "cooling", "ems", "emachine", "battery")
+PARTICIPANTS = wiring.participants()  # launch/include/urban.launch: one include each
 SCENARIO_ARCHITECTURE = {"baseline_urban": "conventional", "hybrid_urban": "p1_48v"}
 
 

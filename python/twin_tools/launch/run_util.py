@@ -6,6 +6,11 @@ import signal
 import socket
 import subprocess
 import time
+from twin_tools import wiring
+
+# topics (twin_tools.wiring: the participants' topics.yaml)
+ENGINE_STATE = wiring.topic("engine", "state")
+VEHICLE_ENGINE_COMMAND = wiring.topic("vehicle", "engine_command")
 
 
 def free_port():
@@ -108,8 +113,8 @@ def chain_length_check(launch_file, tmp, until, **args):
         bags.append([m for m in bag_messages(os.path.join(out, "run.bag")) if m[0] != "/twin/run_info"])
     eng, cmd = {}, {}
     with rosbag.Bag(os.path.join(tmp, "chain1", "run.bag")) as b:
-        for topic, m, _ in b.read_messages(topics=["/engine/state", "/vehicle/engine_command"]):
-            (eng if topic == "/engine/state" else cmd)[m.header.stamp.to_nsec()] = m
+        for topic, m, _ in b.read_messages(topics=[ENGINE_STATE, VEHICLE_ENGINE_COMMAND]):
+            (eng if topic == ENGINE_STATE else cmd)[m.header.stamp.to_nsec()] = m
     same = sum(1 for t, e in eng.items() if t > 0 and e.engine_speed_rad_s == cmd[t].engine_speed_rad_s)
     return bags, statuses, same, sum(1 for t in eng if t > 0)
 

@@ -58,7 +58,7 @@ def report_lines(nodes, warnings):
         return lines + ["No %s beside the bag: the participants' warnings and compute times are "
                         "unknown (a bag from before diagnostics, or copied alone)." % DIAGNOSTICS_BAG, ""]
     if warnings:
-        lines += ["Warnings raised (first time in simulated time; thresholds: the diagnostics: section of each participant's YAML):", "",
+        lines += ["Warnings raised (first time in simulated time; thresholds: the diagnostics: section of each participant's YAML, config/):", "",
                   "| first time [s] | node | warning | raised | active [s] | first message |",
                   "|---|---|---|---|---|---|"]
         for w in warnings:

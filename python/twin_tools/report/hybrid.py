@@ -23,6 +23,15 @@ correction vanishes.
 import numpy as np
 
 from twin_tools.units import DIESEL_LHV_J_KG
+from twin_tools import wiring
+
+# topics (twin_tools.wiring: the participants' topics.yaml)
+BATTERY_STATE = wiring.topic("battery", "state")
+COOLING_STATE = wiring.topic("cooling", "state")
+EMACHINE_STATE = wiring.topic("emachine", "state")
+EMS_COMMAND = wiring.topic("ems", "command")
+ENGINE_STATE = wiring.topic("engine", "state")
+VEHICLE_STATE = wiring.topic("vehicle", "state")
 
 J_PER_KWH = 3.6e6
 MODE_REGEN, MODE_STOPPED = 2, 4
@@ -42,8 +51,8 @@ def _interval_by_mode(cum, t_cum, mode, t_mode, which):
 
 def hybrid_summary(data, summary):
     s = {}
-    em, bat, ems = data.get("/emachine/state"), data.get("/battery/state"), data.get("/ems/command")
-    veh, eng, cool = data.get("/vehicle/state"), data.get("/engine/state"), data.get("/cooling/state")
+    em, bat, ems = data.get(EMACHINE_STATE), data.get(BATTERY_STATE), data.get(EMS_COMMAND)
+    veh, eng, cool = data.get(VEHICLE_STATE), data.get(ENGINE_STATE), data.get(COOLING_STATE)
     if em is None or bat is None:
         return s
     s["em_boost_kwh"] = _l(em, "mech_motoring_energy_j") / J_PER_KWH
@@ -122,7 +131,7 @@ def saving(base, hyb):
 def hybrid_plots(data, save, plt):
     """hybrid.png (power split, SOC, battery T and current), em_map.png (operating points on the
     envelope, efficiency), em_thermal.png (winding/magnet temperatures and the live limits)."""
-    em, bat, ems, eng = data.get("/emachine/state"), data.get("/battery/state"), data.get("/ems/command"), data.get("/engine/state")
+    em, bat, ems, eng = data.get(EMACHINE_STATE), data.get(BATTERY_STATE), data.get(EMS_COMMAND), data.get(ENGINE_STATE)
     if em is None or bat is None:
         return
     fig, ax = plt.subplots(4, 1, figsize=(12, 10), sharex=True)

@@ -27,6 +27,14 @@ import math
 import numpy as np
 
 from twin_tools.units import DIESEL_LHV_J_KG
+from twin_tools import wiring
+
+# topics (twin_tools.wiring: the participants' topics.yaml)
+BATTERY_STATE = wiring.topic("battery", "state")
+EMACHINE_STATE = wiring.topic("emachine", "state")
+ENGINE_HEAT = wiring.topic("engine", "heat")
+ENGINE_STATE = wiring.topic("engine", "state")
+VEHICLE_STATE = wiring.topic("vehicle", "state")
 
 J_PER_KWH = 3.6e6
 # When the bus stands still at a stop: config/mission.yaml stop_service/ (hbt::mission::StopService),
@@ -71,7 +79,7 @@ def _last(d, field, default=0.0):
 
 def energy_ledger(data):
     """{key: kWh} of the run; None when the bag lacks the vehicle or engine state."""
-    veh, eng, heat = data.get("/vehicle/state"), data.get("/engine/state"), data.get("/engine/heat")
+    veh, eng, heat = data.get(VEHICLE_STATE), data.get(ENGINE_STATE), data.get(ENGINE_HEAT)
     if veh is None or eng is None:
         return None
     L = {}
@@ -95,7 +103,7 @@ def energy_ledger(data):
         sinks += L[key]
     L["aux_total"] = _last(veh, "aux_work_j")
     L["residual"] = crank_engine_J + L["crank_em"] - sinks
-    em, bat = data.get("/emachine/state"), data.get("/battery/state")
+    em, bat = data.get(EMACHINE_STATE), data.get(BATTERY_STATE)
     if em is not None and bat is not None:
         L["em_motoring"] = _last(em, "mech_motoring_energy_j")
         L["em_generating"] = _last(em, "mech_generating_energy_j")
@@ -141,7 +149,7 @@ def fuel_by_state(data, stop_service=STOP_SERVICE_DEFAULT):
     """({state: kg}, {state: s}): the fuel burnt between two bag samples is booked to the state
     at the end of the interval (the state the engine ran in), so the kg add up to the total
     exactly."""
-    veh, eng = data.get("/vehicle/state"), data.get("/engine/state")
+    veh, eng = data.get(VEHICLE_STATE), data.get(ENGINE_STATE)
     if veh is None or eng is None or len(eng["t"]) < 2:
         return None, None
     st = operating_state(veh, eng, stop_service["standstill_speed_m_s"])
@@ -228,7 +236,7 @@ def plot_ledger(L, path):
 def plot_operating_map(data, path):
     """Share of time and of fuel over engine speed x brake torque (2-D histograms)."""
     import matplotlib.pyplot as plt
-    eng = data.get("/engine/state")
+    eng = data.get(ENGINE_STATE)
     if eng is None or len(eng["t"]) < 2:
         return False
     rpm = eng["engine_speed_rad_s"][1:] * 60.0 / (2.0 * math.pi)

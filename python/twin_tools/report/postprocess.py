@@ -10,7 +10,8 @@ alone (analysed by header.stamp).
       any bag a run wrote (default DIR = the bag's folder); identical output
 The participants' warnings (summary key `warnings`) and step compute times (report.md only) come
 from diagnostics.bag beside the bag (twin_tools.report.diagnostics); without it the report says so.
-Exit status: 0 if the run completed, 1 if it was aborted (the message names the failing node).
+Exit status: 0 if the run completed, 1 if it was aborted (the message names the failing node),
+130 if it was interrupted (SIGINT/SIGTERM: the report covers the stretch that ran and says so).
 
 Fuel: diesel, density and lower heating value as src/common/units.hpp defines them (with their
 sources; read by twin_tools.units).
@@ -26,6 +27,11 @@ import numpy as np
 from twin_tools.bags.reader import BagError, open_bag
 from twin_tools.report import diagnostics, hybrid, ledger, thermal
 from twin_tools.units import DIESEL_DENSITY_KG_L
+from twin_tools import wiring
+
+# topics (twin_tools.wiring: the participants' topics.yaml)
+ENGINE_STATE = wiring.topic("engine", "state")
+VEHICLE_STATE = wiring.topic("vehicle", "state")
 
 J_PER_KWH = 3.6e6
 
@@ -129,8 +135,8 @@ def stops_served(veh, stops_csv, sv):
 
 
 def summarise(scenario, args, status, data, stops_csv, sv=ledger.STOP_SERVICE_DEFAULT):
-    veh = data.get("/vehicle/state")
-    eng = data.get("/engine/state")
+    veh = data.get(VEHICLE_STATE)
+    eng = data.get(ENGINE_STATE)
     # defaults as in launch/include/urban.launch (the scenario file sets the architecture)
     arch = args.get("architecture") or ("p1_48v" if scenario == "hybrid_urban" else "conventional")
     s = {
@@ -182,7 +188,7 @@ def plots(out, data):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    veh, eng = data.get("/vehicle/state"), data.get("/engine/state")
+    veh, eng = data.get(VEHICLE_STATE), data.get(ENGINE_STATE)
     if veh is None or eng is None:
         return []
     files = []
@@ -233,10 +239,19 @@ def plots(out, data):
     return files
 
 
+# status.json "status" of a run stopped from outside (SIGINT/SIGTERM, src/cosim/stepper.hpp)
+INTERRUPTED = "interrupted"
+# exit status of a report of an interrupted run (128 + SIGINT, as the shell reports Ctrl-C)
+EXIT_INTERRUPTED = 130
+
+
 def report(out, s, status, files, diag_lines=()):
     lines = ["# Run report: %s" % s["scenario"], ""]
     lines.append("Status: **%s**%s" % (status["status"], (" - " + status["message"]) if status["message"] else ""))
     lines.append("")
+    if status["status"] == INTERRUPTED:
+        lines += ["**Partial report**: the run was stopped from outside at t = %.2f s; every figure below "
+                  "covers only the stretch 0 - %.2f s of the mission." % (status["sim_time_s"], status["sim_time_s"]), ""]
     lines.append("| quantity | value |")
     lines.append("|---|---|")
     for k, v in s.items():
@@ -283,6 +298,9 @@ def report_from_bag(bag, out, baseline=None):
     warnings = diagnostics.warnings_list(nodes) if nodes is not None else None
     if warnings is not None:
         s["warnings"] = warnings
+    if status["status"] == INTERRUPTED:  # what ran, and that it is not the whole mission
+        s["partial"] = True
+        s["interrupted_at_s"] = status["sim_time_s"]
     if baseline:
         with open(baseline) as fh:
             pct = hybrid.saving(json.load(fh), s)
@@ -327,6 +345,10 @@ def main():
             "stop_service": stop_service(a.out, status["status"] == "ok")}
     store_run_info(bag, info)
     status, s = report_from_bag(bag, a.out)
+    if status["status"] == INTERRUPTED:
+        print("twin: run INTERRUPTED: %s; a partial report of the stretch that ran is in %s (report.md, "
+              "summary.json: partial)" % (status["message"], a.out), file=sys.stderr)
+        return EXIT_INTERRUPTED
     if status["status"] != "ok":
         print("twin: run FAILED: %s" % status["message"], file=sys.stderr)
         return 1

@@ -10,6 +10,14 @@ mean_charge_air_c (time mean of the intake-manifold temperature), mean_back_pres
 ats_balance_closure (|energy residual| / heat or enthalpy in).
 """
 import numpy as np
+from twin_tools import wiring
+
+# topics (twin_tools.wiring: the participants' topics.yaml)
+AFTERTREATMENT_STATE = wiring.topic("aftertreatment", "state")
+COOLING_STATE = wiring.topic("cooling", "state")
+ENGINE_EXHAUST = wiring.topic("engine", "exhaust")
+ENGINE_STATE = wiring.topic("engine", "state")
+VEHICLE_ENGINE_COMMAND = wiring.topic("vehicle", "engine_command")
 
 J_PER_KWH = 3.6e6
 
@@ -23,8 +31,8 @@ def _time_mean(d, field):
 
 def thermal_summary(data):
     s = {}
-    cool, ats = data.get("/cooling/state"), data.get("/aftertreatment/state")
-    eng, exh = data.get("/engine/state"), data.get("/engine/exhaust")
+    cool, ats = data.get(COOLING_STATE), data.get(AFTERTREATMENT_STATE)
+    eng, exh = data.get(ENGINE_STATE), data.get(ENGINE_EXHAUST)
     if cool is not None:
         s["fan_kwh"] = float(cool["fan_drive_energy_j"][-1]) / J_PER_KWH
         s["pump_kwh"] = float(cool["pump_energy_j"][-1]) / J_PER_KWH
@@ -49,7 +57,7 @@ def thermal_summary(data):
         h_in = float(ats["enthalpy_in_j"][-1])
         if h_in > 0:
             s["ats_balance_closure"] = abs(float(ats["energy_residual_j"][-1])) / h_in
-        amb = data.get("/vehicle/engine_command")
+        amb = data.get(VEHICLE_ENGINE_COMMAND)
         p_amb = float(amb["ambient_pressure_pa"][-1]) if amb is not None else 101325.0
         s["mean_back_pressure_kpa"] = (_time_mean(ats, "back_pressure_pa") - p_amb) / 1000.0
     if eng is not None and "charge_air_temperature_k" in eng and float(eng["charge_air_temperature_k"][-1]) > 0:
@@ -59,8 +67,8 @@ def thermal_summary(data):
 
 def thermal_plots(data, save, plt):
     """Adds thermal.png, fan.png, nox.png (each only when its node ran); `save(fig, name)`."""
-    cool, ats = data.get("/cooling/state"), data.get("/aftertreatment/state")
-    exh = data.get("/engine/exhaust")
+    cool, ats = data.get(COOLING_STATE), data.get(AFTERTREATMENT_STATE)
+    exh = data.get(ENGINE_EXHAUST)
     if cool is not None or ats is not None:
         fig, ax = plt.subplots(figsize=(12, 4.5))
         if cool is not None:

@@ -18,18 +18,21 @@ import threading
 import time
 
 import rospy
-from hybrid_bus_twin.msg import (AftertreatmentState, BatteryState, CoolingState, EMachineState,
-                                 EmsCommand, EngineState, VehicleState)
 from visualization_msgs.msg import MarkerArray
 
+from twin_tools import wiring
 from twin_tools.viz import layout as viz_layout
 from twin_tools.viz import markers as viz_markers
 
-TOPICS = {"/vehicle/state": ("vehicle", VehicleState), "/engine/state": ("engine", EngineState),
-          "/cooling/state": ("cooling", CoolingState),
-          "/aftertreatment/state": ("aftertreatment", AftertreatmentState),
-          "/battery/state": ("battery", BatteryState), "/emachine/state": ("emachine", EMachineState),
-          "/ems/command": ("ems", EmsCommand)}
+# what the view draws: (participant, key) of the wiring; the layout finds each message under its
+# participant's name (twin_tools.viz.layout)
+DRAWN = (("vehicle", "state"), ("engine", "state"), ("cooling", "state"), ("aftertreatment", "state"),
+         ("battery", "state"), ("emachine", "state"), ("ems", "command"))
+
+
+def drawn_topics():
+    """{topic: (participant, message class)} of DRAWN, from the participants' topics.yaml."""
+    return {wiring.topic(p, k): (p, wiring.message_class(p, k)) for p, k in DRAWN}
 
 
 def read_columns(path, columns, every_m=0.0):
@@ -60,12 +63,13 @@ class Viz:
         self.prev_vehicle = None      # the vehicle message before the latest: wheel/brake power
         self.lock = threading.Lock()
         self.subs = {}
+        self.topics = drawn_topics()
         self.drawn = {}
         self.pub = rospy.Publisher("/twin/markers", MarkerArray, queue_size=1)
 
     def subscribe_new_topics(self):
         have = dict(rospy.get_published_topics())
-        for topic, (key, cls) in TOPICS.items():
+        for topic, (key, cls) in self.topics.items():
             if topic not in self.subs and have.get(topic) == cls._type:
                 self.subs[topic] = rospy.Subscriber(topic, cls, self.on_msg, key, queue_size=1)
 
@@ -113,7 +117,7 @@ def draw_loop(viz, period_s):
     while not rospy.is_shutdown():
         try:
             now = time.monotonic()
-            if now >= next_check and len(viz.subs) < len(TOPICS):
+            if now >= next_check and len(viz.subs) < len(viz.topics):
                 viz.subscribe_new_topics()
                 next_check = now + 1.0
             viz.publish()
