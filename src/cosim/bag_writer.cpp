@@ -1,12 +1,29 @@
 #include "cosim/bag_writer.hpp"
 
+#include <sys/statvfs.h>
+
+#include <cstdint>
 #include <stdexcept>
 
 namespace hbt::cosim {
 
+std::string describeWriteFailure(const std::string& file, const std::string& what) {
+  std::string msg = "writing " + file + ": " + what;
+  const std::string::size_type slash = file.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : file.substr(0, slash));
+  struct statvfs fs {};
+  if (::statvfs(dir.c_str(), &fs) == 0) {
+    const std::uint64_t free_bytes = static_cast<std::uint64_t>(fs.f_bavail) * fs.f_frsize;
+    constexpr std::uint64_t kNearlyFull_bytes = 1 << 20;  // less than a bag chunk left
+    if (free_bytes < kNearlyFull_bytes)
+      msg += ": no space left on the device holding it (" + std::to_string(free_bytes) + " bytes free)";
+  }
+  return msg;
+}
+
 AsyncBagWriter::AsyncBagWriter(const std::string& file, std::size_t max_queued)
     : file_(file), max_queued_(max_queued > 0 ? max_queued : 1) {
-  bag_.open(file, rosbag::bagmode::Write);
+  bag_->open(file, rosbag::bagmode::Write);
   thread_ = std::thread(&AsyncBagWriter::run, this);
 }
 
@@ -20,7 +37,7 @@ AsyncBagWriter::~AsyncBagWriter() {
 void AsyncBagWriter::push(Job job) {
   std::unique_lock<std::mutex> lk(m_);
   cv_space_.wait(lk, [this] { return queue_.size() < max_queued_ || !error_.empty() || stop_; });
-  if (!error_.empty()) throw std::runtime_error("writing " + file_ + ": " + error_);
+  if (!error_.empty()) throw std::runtime_error(error_);
   if (stop_) throw std::runtime_error("writing " + file_ + ": the bag is closed");
   queue_.push_back(std::move(job));
   lk.unlock();
@@ -39,12 +56,12 @@ void AsyncBagWriter::run() {
     }
     cv_space_.notify_one();
     try {
-      job(bag_);
+      job(*bag_);
       std::lock_guard<std::mutex> lk(m_);
       ++written_;
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lk(m_);
-      if (error_.empty()) error_ = e.what();
+      if (error_.empty()) error_ = describeWriteFailure(file_, e.what());
       queue_.clear();
       cv_space_.notify_all();
       return;
@@ -62,7 +79,13 @@ void AsyncBagWriter::close() {
   cv_work_.notify_all();
   cv_space_.notify_all();
   if (thread_.joinable()) thread_.join();
-  bag_.close();
+  try {
+    bag_->close();  // writes the index: the first to fail when the disk filled at the very end
+  } catch (const std::exception& e) {
+    (void)bag_.release();  // see bag_
+    std::lock_guard<std::mutex> lk(m_);
+    if (error_.empty()) error_ = describeWriteFailure(file_, e.what());
+  }
   throwIfFailed();
 }
 
@@ -73,7 +96,7 @@ std::size_t AsyncBagWriter::written() const {
 
 void AsyncBagWriter::throwIfFailed() {
   std::lock_guard<std::mutex> lk(m_);
-  if (!error_.empty()) throw std::runtime_error("writing " + file_ + ": " + error_);
+  if (!error_.empty()) throw std::runtime_error(error_);
 }
 
 }  // namespace hbt::cosim

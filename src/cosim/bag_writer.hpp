@@ -21,6 +21,11 @@
 
 namespace hbt::cosim {
 
+/// "writing <file>: <what>", and the cause where the file system tells it: "no space left on the
+/// device (0 bytes free)" when the device holding `file` is full (rosbag says only "Error
+/// writing" or "Error seeking").
+std::string describeWriteFailure(const std::string& file, const std::string& what);
+
 class AsyncBagWriter {
  public:
   /// Opens `file` for writing (throws rosbag::BagException) and starts the writer thread.
@@ -48,7 +53,9 @@ class AsyncBagWriter {
 
   std::string file_;
   std::size_t max_queued_;
-  rosbag::Bag bag_;
+  // rosbag's destructor closes again and would throw (terminate) after a failed close: a bag whose
+  // close failed is released, its descriptor left to the process end (an error path only)
+  std::unique_ptr<rosbag::Bag> bag_ = std::make_unique<rosbag::Bag>();
   mutable std::mutex m_;
   std::condition_variable cv_work_, cv_space_;
   std::deque<Job> queue_;

@@ -42,6 +42,7 @@ void Recorder::configure() {
     pnh_.param("diagnostics_wait_s", diag_wait_s_, 2.0);
     if (!(diag_wait_s_ >= 0.0 && diag_wait_s_ <= 60.0))
       throw InputError(where, "diagnostics_wait_s", "must be in [0, 60] s");
+    diag_file_ = diag_file;
     diag_bag_ = std::make_unique<rosbag::Bag>();
     try {
       diag_bag_->open(diag_file, rosbag::bagmode::Write);
@@ -96,8 +97,13 @@ void Recorder::topicsAnnounced(const std::vector<std::string>& topics,
 }
 
 void Recorder::writeDiagnostics(const diagnostic_msgs::DiagnosticArray& m) {
+  if (!diag_error_.empty()) return;  // failed before: the run is stopping on it
   const ros::Time t = m.header.stamp.isZero() ? ros::Time(0, 1) : m.header.stamp;  // rosbag refuses 0
-  diag_bag_->write("/diagnostics", t, m);
+  try {
+    diag_bag_->write("/diagnostics", t, m);
+  } catch (const std::exception& e) {  // (in a callback: remembered, raised by the next step)
+    diag_error_ = describeWriteFailure(diag_file_, e.what());
+  }
 }
 
 void Recorder::onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
@@ -122,6 +128,7 @@ bool Recorder::diagnosticsComplete() const {
 }
 
 void Recorder::step(const ros::Time& t, double) {
+  if (!diag_error_.empty()) throw std::runtime_error(diag_error_);
   if (period_ns_ == 0 || t.toNSec() % period_ns_ == 0) writeAt(t);
 }
 
@@ -139,12 +146,17 @@ bool Recorder::readyToClose(const ros::Time& t_end) const {
 }
 
 void Recorder::close(const ros::Time& t_end, bool aborted) {
+  std::string run_bag_error;
   if (bag_) {
     bool ready = true;
     for (const auto& r : topics_) ready = ready && r->input()->readyFor(t_end.toNSec());
     if (!aborted && (!wrote_any_ || last_written_ < t_end) && ready) writeAt(t_end);
     std::unique_ptr<AsyncBagWriter> bag = std::move(bag_);
-    bag->close();  // drains the queue; a write error throws (the run fails naming the file)
+    try {
+      bag->close();  // drains the queue; a write error fails the run naming the file
+    } catch (const std::exception& e) {
+      run_bag_error = e.what();  // thrown after the diagnostics bag is closed too
+    }
   }
   if (diag_bag_) {
     if (!aborted && !diag_waiting_.empty()) {
@@ -154,10 +166,17 @@ void Recorder::close(const ros::Time& t_end, bool aborted) {
                              << diag_wait_s_ << " s; diagnostics.bag has their last periodic status");
     }
     writeDiagnostics(finalDiagnostics());
-    diag_bag_->close();
-    diag_bag_.reset();
     diag_timer_.stop();
+    try {
+      diag_bag_->close();
+      diag_bag_.reset();
+    } catch (const std::exception& e) {
+      if (diag_error_.empty()) diag_error_ = describeWriteFailure(diag_file_, e.what());
+      (void)diag_bag_.release();  // its destructor would close again and throw (terminate)
+    }
   }
+  if (!run_bag_error.empty()) throw std::runtime_error(run_bag_error);
+  if (!diag_error_.empty()) throw std::runtime_error(diag_error_);
 }
 
 }  // namespace hbt::cosim

@@ -65,6 +65,8 @@ class Recorder : public Participant {
   bool diagnosticsComplete() const;
   std::unique_ptr<AsyncBagWriter> bag_;   // run.bag, written on its own thread
   std::unique_ptr<rosbag::Bag> diag_bag_;
+  std::string diag_file_;   // its file name (messages)
+  std::string diag_error_;  // a failed write of it: stops the run at the next step
   ros::Subscriber diag_sub_;
   ros::WallTimer diag_timer_;  // re-checks readyToClose while waiting for final statuses
   std::set<std::string> diag_waiting_;  // participants whose final status has not arrived

@@ -5,7 +5,12 @@
 #include <hybrid_bus_twin/StepCommand.h>
 #include <rosgraph_msgs/Clock.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -21,6 +26,36 @@ using hybrid_bus_twin::StepStatus;
 using Clock = std::chrono::steady_clock;
 
 namespace {
+
+// The status file's blocks, reserved at start so that the run's end is on record even when the
+// disk filled up meanwhile (the bag is what fills it).
+constexpr off_t kStatusFileReserve_bytes = 64 * 1024;
+
+/// Reserves `bytes` of disk for `path` without changing its size (best effort: fallocate where
+/// the file system supports it).
+void reserveSpace(const std::string& path, off_t bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT, 0644);
+  if (fd < 0) return;
+  (void)::fallocate(fd, FALLOC_FL_KEEP_SIZE, 0, bytes);
+  ::close(fd);
+}
+
+/// Replaces the content of `path` by `text` in place (no truncation before the write, so the
+/// blocks reserved for it stay its own); "" or what failed.
+std::string writeInPlace(const std::string& path, const std::string& text) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT, 0644);
+  if (fd < 0) return std::strerror(errno);
+  std::string failure;
+  std::size_t done = 0;
+  while (done < text.size() && failure.empty()) {
+    const ssize_t n = ::pwrite(fd, text.data() + done, text.size() - done, static_cast<off_t>(done));
+    if (n < 0 && errno != EINTR) failure = std::strerror(errno);
+    else if (n > 0) done += static_cast<std::size_t>(n);
+  }
+  if (failure.empty() && ::ftruncate(fd, static_cast<off_t>(text.size())) != 0) failure = std::strerror(errno);
+  if (::close(fd) != 0 && failure.empty()) failure = std::strerror(errno);
+  return failure;
+}
 
 std::string jsonEscape(const std::string& s) {
   std::string o;
@@ -86,6 +121,7 @@ std::string Stepper::readParams(core::StepperConfig& cfg) {
 bool Stepper::start() {
   epoch_ = last_print_ = Clock::now();
   pnh_.param<std::string>("status_file", status_file_, "");
+  if (!status_file_.empty()) reserveSpace(status_file_, kStatusFileReserve_bytes);
   pnh_.param("progress", progress_, true);
   core::StepperConfig cfg;
   const std::string error = readParams(cfg);
@@ -200,7 +236,7 @@ void Stepper::writeStatus(const std::string& status, const std::string& message,
                           uint64_t steps, double wall_s) {
   status_written_ = true;
   if (status_file_.empty()) return;
-  std::ofstream f(status_file_);
+  std::ostringstream f;
   f << std::setprecision(17);
   double dt = 0.01;
   if (core_) dt = core_->dt_s();  // (no parameter server call: also at shutdown)
@@ -230,6 +266,8 @@ void Stepper::writeStatus(const std::string& status, const std::string& message,
     first = false;
   }
   f << "\n  }\n}\n";
+  const std::string failure = writeInPlace(status_file_, f.str());
+  if (!failure.empty()) ROS_ERROR_STREAM("stepper: cannot write the status file " << status_file_ << ": " << failure);
 }
 
 }  // namespace hbt::cosim

@@ -44,7 +44,7 @@ def store_run_info(bag_path, info):
     import rosbag
     import rospy
     from std_msgs.msg import String
-    with rosbag.Bag(bag_path) as bag:
+    with open_bag(bag_path) as bag:  # a bag cut short: BagError saying how to recover it
         t_end = bag.get_end_time() if bag.get_message_count() else 1e-9
     with rosbag.Bag(bag_path, "a") as bag:
         bag.write(RUN_INFO_TOPIC, String(data=json.dumps(info, sort_keys=True)), rospy.Time.from_sec(t_end))
@@ -343,8 +343,14 @@ def main():
     info = {"scenario": a.scenario, "args": launch_args(a.args), "status": status,
             "stops_csv": open(stops).read() if os.path.exists(stops) else "",
             "stop_service": stop_service(a.out, status["status"] == "ok")}
-    store_run_info(bag, info)
-    status, s = report_from_bag(bag, a.out)
+    try:
+        store_run_info(bag, info)
+        status, s = report_from_bag(bag, a.out)
+    except (BagError, OSError) as e:  # a run that stopped on its bag (disk full, ...): its status says why
+        print("twin: run FAILED: %s" % status["message"], file=sys.stderr)
+        print("twin: no report: %s" % (e if isinstance(e, BagError) else "%s: %s" % (e.filename or a.out, e.strerror)),
+              file=sys.stderr)
+        return 1
     if status["status"] == INTERRUPTED:
         print("twin: run INTERRUPTED: %s; a partial report of the stretch that ran is in %s (report.md, "
               "summary.json: partial)" % (status["message"], a.out), file=sys.stderr)
