@@ -27,34 +27,27 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-// The status file's blocks, reserved at start so that the run's end is on record even when the
-// disk filled up meanwhile (the bag is what fills it).
-constexpr off_t kStatusFileReserve_bytes = 64 * 1024;
+// Disk reserved at start beside the status file (<status file>.reserve) and freed just before the
+// status is written, so that the run's end is on record even when the disk filled up meanwhile
+// (the bag is what fills it).
+constexpr off_t kStatusReserve_bytes = 64 * 1024;
 
-/// Reserves `bytes` of disk for `path` without changing its size (best effort: fallocate where
-/// the file system supports it).
+std::string reserveFileOf(const std::string& status_file) { return status_file + ".reserve"; }
+
+/// Allocates `bytes` of disk to a file `path` (best effort).
 void reserveSpace(const std::string& path, off_t bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT, 0644);
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (fd < 0) return;
-  (void)::fallocate(fd, FALLOC_FL_KEEP_SIZE, 0, bytes);
+  (void)::posix_fallocate(fd, 0, bytes);
   ::close(fd);
 }
 
-/// Replaces the content of `path` by `text` in place (no truncation before the write, so the
-/// blocks reserved for it stay its own); "" or what failed.
-std::string writeInPlace(const std::string& path, const std::string& text) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT, 0644);
-  if (fd < 0) return std::strerror(errno);
-  std::string failure;
-  std::size_t done = 0;
-  while (done < text.size() && failure.empty()) {
-    const ssize_t n = ::pwrite(fd, text.data() + done, text.size() - done, static_cast<off_t>(done));
-    if (n < 0 && errno != EINTR) failure = std::strerror(errno);
-    else if (n > 0) done += static_cast<std::size_t>(n);
-  }
-  if (failure.empty() && ::ftruncate(fd, static_cast<off_t>(text.size())) != 0) failure = std::strerror(errno);
-  if (::close(fd) != 0 && failure.empty()) failure = std::strerror(errno);
-  return failure;
+/// Writes `text` to `path`; "" or what failed.
+std::string writeFile(const std::string& path, const std::string& text) {
+  std::ofstream f(path);
+  f << text;
+  f.close();
+  return f ? "" : std::strerror(errno);
 }
 
 std::string jsonEscape(const std::string& s) {
@@ -121,7 +114,7 @@ std::string Stepper::readParams(core::StepperConfig& cfg) {
 bool Stepper::start() {
   epoch_ = last_print_ = Clock::now();
   pnh_.param<std::string>("status_file", status_file_, "");
-  if (!status_file_.empty()) reserveSpace(status_file_, kStatusFileReserve_bytes);
+  if (!status_file_.empty()) reserveSpace(reserveFileOf(status_file_), kStatusReserve_bytes);
   pnh_.param("progress", progress_, true);
   core::StepperConfig cfg;
   const std::string error = readParams(cfg);
@@ -266,7 +259,8 @@ void Stepper::writeStatus(const std::string& status, const std::string& message,
     first = false;
   }
   f << "\n  }\n}\n";
-  const std::string failure = writeInPlace(status_file_, f.str());
+  ::unlink(reserveFileOf(status_file_).c_str());  // its space is the status file's
+  const std::string failure = writeFile(status_file_, f.str());
   if (!failure.empty()) ROS_ERROR_STREAM("stepper: cannot write the status file " << status_file_ << ": " << failure);
 }
 
