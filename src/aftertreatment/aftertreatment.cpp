@@ -9,7 +9,6 @@
 namespace hbt::aftertreatment {
 
 namespace {
-constexpr double kPi = units::kPi;
 constexpr double kDH_CO = 283.0e3;     // J/mol CO -> CO2
 constexpr double kDH_NO2 = 57.1e3;     // J/mol NO + 1/2 O2 -> NO2
 constexpr double kDS_NO2 = -73.2;      // J/(mol K)
@@ -280,7 +279,7 @@ void Aftertreatment::updateBackPressure(const AtsInputs& in, const StepState& s)
   {
     const double T = s.Tg_out[kASC];
     const double rho = p / (s.R * T);
-    const double A = 0.25 * kPi * p_.pipe_diameter_m * p_.pipe_diameter_m;
+    const double A = 0.25 * units::kPi * p_.pipe_diameter_m * p_.pipe_diameter_m;
     const double u = s.mdot / (rho * A);
     out_.muffler_dp_Pa = p_.muffler_k * 0.5 * rho * u * u;
     p += out_.muffler_dp_Pa;

@@ -8,13 +8,12 @@
 namespace hbt::aftertreatment {
 
 namespace {
-constexpr double kPi = units::kPi;
 constexpr double kSigma = 5.670374e-8;  // Stefan-Boltzmann [W/(m^2 K^4)]
 }  // namespace
 
 Brick::Brick(std::string name, const BrickParams& p, const HeatTransferParams& h, bool wall_flow)
     : name_(std::move(name)), p_(p), h_(h), wall_flow_(wall_flow), n_(p.slices) {
-  A_ = 0.25 * kPi * p.diameter_m * p.diameter_m;
+  A_ = 0.25 * units::kPi * p.diameter_m * p.diameter_m;
   V_ = A_ * p.length_m;
   pitch_ = 0.0254 / std::sqrt(p.cpsi);
   w_ = p.wall_thickness_mil * 25.4e-6;
@@ -25,7 +24,7 @@ Brick::Brick(std::string name, const BrickParams& p, const HeatTransferParams& h
                    V_ * p.washcoat_g_L * p.washcoat_cp_J_kgK  // g/L == kg/m^3
                    + p.can_mass_kg * p.can_cp_J_kgK;
   C_slice_ = C / n_;
-  A_can_slice_ = kPi * (p.diameter_m + 2.0 * h.insulation_thickness_m) * p.length_m / n_ *
+  A_can_slice_ = units::kPi * (p.diameter_m + 2.0 * h.insulation_thickness_m) * p.length_m / n_ *
                  h.can_length_factor;
   T_.assign(n_, 298.15);
 }

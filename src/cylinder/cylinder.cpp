@@ -95,7 +95,7 @@ double Cylinder::fmep_Pa(double omega) const {
 }
 
 double Cylinder::frictionTorque_Nm(double omega) const {
-  return fmep_Pa(omega) * crank_.displacement() / (4.0 * M_PI);
+  return fmep_Pa(omega) * crank_.displacement() / (4.0 * units::kPi);
 }
 
 void Cylinder::diverged(const char* quantity, double value) const {
@@ -285,7 +285,7 @@ void Cylinder::transferWallHeat(SubstepState& s) {
   const double h = wallHeatCoefficient(s);
   const Geometry& G = crank_.geometry();
   const double Ah = crank_.headArea(), Ap = crank_.pistonCrownArea(),
-               Al = M_PI * G.bore_m * (s.travel0 + G.top_land_height_m);
+               Al = units::kPi * G.bore_m * (s.travel0 + G.top_land_height_m);
   const double A = Ah + Ap + Al, AT = Ah * Thead_ + Ap * Tpiston_ + Al * Tliner_;
   const double fu = s.Vu0 / s.V0, fb = s.Vb0 / s.V0;
   const double Qu = h * fu * (A * Tu_ - AT), Qb = two_zone_ ? h * fb * (A * Tb_ - AT) : 0.0;

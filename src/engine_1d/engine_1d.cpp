@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 
 namespace hbt::engine_1d {
 namespace {
@@ -56,7 +57,7 @@ void Engine1D::reset(double w, double torque, double T_amb, double p_amb, double
   in.T3 = 550.0 + 350.0 * load;
   in.turbo_rad_s = P_.engine.initial_turbo_speed_rpm * M_PI / 30.0 *
                    std::clamp(0.35 + 0.65 * load, 0.2, 1.0) * std::sqrt(std::min(rpm / 1400.0, 1.6));
-  const double cps = P_.engine.cylinders * w / (4.0 * M_PI);  // cylinder-cycles per second
+  const double cps = P_.engine.cylinders * w / (4.0 * units::kPi);  // cylinder-cycles per second
   in.fuel_per_cycle_kg = treq > tmot ? ref_->steadyFuel(w, treq) / cps : 0.0;
   asm_.reset();
   asm_ = std::make_unique<EngineAssembly>(P_, *tc_, maps_, in);

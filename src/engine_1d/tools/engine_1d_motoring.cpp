@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "common/units.hpp"
 #include "engine_1d/engine_1d.hpp"
 
 using namespace hbt::engine_1d;
@@ -64,7 +65,7 @@ int main(int argc, char** argv) {
     Engine1D eng(p, root);
     // mean effective pressure [bar] of a torque [Nm] over the swept volume of all cylinders
     const double Vd_m3 = eng.assembly().displacement_m3();
-    auto toBar = [Vd_m3](double torque_Nm) { return torque_Nm * 4.0 * M_PI / Vd_m3 / 1e5; };
+    auto toBar = [Vd_m3](double torque_Nm) { return torque_Nm * 4.0 * hbt::units::kPi / Vd_m3 / 1e5; };
     if (!fired.empty()) {
       const double dt = 0.02;
       std::printf("  rpm  load  T_b   BSFC  ref   err%%  | IMEPg IMEPn PMEP FMEP  pmax@deg   SOC  ID  CA10 CA50 "

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "common/units.hpp"
 #include "engine_1d/engine_1d.hpp"
 #include "engine_1d/steady_point.hpp"
 
@@ -147,7 +148,7 @@ int main(int argc, char** argv) {
         ca50 += r.ca50_deg / ncyl, delay += r.ignition_delay_main_deg / ncyl;
       }
       const double Vd_m3 = eng.assembly().displacement_m3();
-      const double fmep = o->friction_torque_Nm * 4.0 * M_PI / Vd_m3;
+      const double fmep = o->friction_torque_Nm * 4.0 * hbt::units::kPi / Vd_m3;
       csv << q.rpm << "," << q.load << "," << treq << "," << Tb << "," << bsfc << "," << bref << ","
           << err << "," << fuel << "," << fref << "," << o->air_mass_flow_kg_s << "," << o->lambda
           << "," << o->boost_pressure_Pa << "," << o->boost_target_Pa << ","
