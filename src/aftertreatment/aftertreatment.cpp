@@ -168,7 +168,7 @@ Aftertreatment::StepState Aftertreatment::beginStep(double dt, const AtsInputs& 
   s.mcp = s.mdot * s.cp;
   s.Tamb = in.ambient_T_K;
   s.v = in.vehicle_speed_m_s;
-  s.x_O2 = in.comp.y_O2 * s.M / 0.031999;
+  s.x_O2 = in.comp.y_O2 * s.M / species::kO2_kg_mol;
   return s;
 }
 

@@ -44,7 +44,7 @@ double Brick::externalH(double T_wall_K, double T_amb_K, double v) const {
   const double u = h_.underbody_air_factor * v;
   if (u > 0.0) {
     // Air film at the mean of can and ambient temperature (ambient pressure).
-    const double rho = kAtm_Pa / (287.05 * Tm);
+    const double rho = kAtm_Pa / (species::kDryAirGas_J_kgK * Tm);
     const double Dc = p_.diameter_m + 2.0 * h_.insulation_thickness_m;
     const double Re = rho * u * Dc / viscosity(Tm);
     const double Pr13 = std::cbrt(0.70);

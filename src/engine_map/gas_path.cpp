@@ -3,12 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/species.hpp"
 #include "common/units.hpp"
 
 namespace hbt::engine_map {
 namespace {
-constexpr double kM_C = 12.011, kM_H = 1.008, kM_O2 = 31.999, kM_N2 = 28.155;
-constexpr double kM_CO2 = 44.010, kM_H2O = 18.015, kN2_per_O2 = 3.773;
+// Molar masses [g/mol]: atoms C and H, N2* (atmospheric nitrogen incl. argon) of this gas path;
+// O2, CO2 and H2O from common/species.
+constexpr double kM_C = 12.011, kM_H = 1.008, kM_N2 = 28.155;
+constexpr double kM_O2 = species::gPerMol(species::kO2_kg_mol);
+constexpr double kM_CO2 = species::gPerMol(species::kCO2_kg_mol);
+constexpr double kM_H2O = species::gPerMol(species::kH2O_kg_mol);
+constexpr double kN2_per_O2 = 3.773;  // mol N2* per mol O2 in air
 }  // namespace
 
 double stoichiometricAfr(double y) {
