@@ -86,7 +86,7 @@ PortFlow SingleCylinderRig::valveFlow(const ValveProfile& v, double p_res, doubl
 }
 
 PortFlows SingleCylinderRig::step() {
-  const double omega = rp_.speed_rpm * M_PI / 30.0;
+  const double omega = units::rpmToRadps(rp_.speed_rpm);
   const double dt = units::degToRad(rp_.step_deg) / omega;
   PortFlows f;
   f.intake = valveFlow(rp_.intake, rp_.p_intake_Pa, rp_.T_intake_K, rp_.intake_burned_frac);

@@ -25,10 +25,6 @@
 
 using namespace hbt::engine_1d;
 
-namespace {
-constexpr double kRpm = M_PI / 30.0;
-}  // namespace
-
 int main(int argc, char** argv) {
   int speeds = 9;
   double n_lo = 650.0, n_hi = 2450.0, sim = 1.5;
@@ -71,7 +67,7 @@ int main(int argc, char** argv) {
       std::printf("  rpm  load  T_b   BSFC  ref   err%%  | IMEPg IMEPn PMEP FMEP  pmax@deg   SOC  ID  CA10 CA50 "
                   "CA90 | Qw/Qf burn/inj eta_ig lambda NOx[g/kWh]\n");
       for (std::size_t j = 0; j + 1 < fired.size(); j += 2) {
-        const double rpm = fired[j], w = rpm * kRpm, treq = fired[j + 1] * eng.fullLoadTorque(w);
+        const double rpm = fired[j], w = hbt::units::rpmToRadps(rpm), treq = fired[j + 1] * eng.fullLoadTorque(w);
         eng.reset(w, treq, 298.15);
         Engine1DInputs in;
         in.speed_rad_s = w;
@@ -106,7 +102,7 @@ int main(int argc, char** argv) {
     std::printf("  rpm   T_b[Nm]  ref[Nm]   err   T_i,net  T_f   FMEP  PMEP(bar)  pmax  p_im   p3\n");
     for (int i = 0; i < speeds; ++i) {
       const double rpm = speeds > 1 ? n_lo + (n_hi - n_lo) * i / (speeds - 1) : n_lo;
-      const double w = rpm * kRpm;
+      const double w = hbt::units::rpmToRadps(rpm);
       eng.reset(w, eng.motoringTorque(w), 298.15);
       Engine1DInputs in;
       in.speed_rad_s = w;

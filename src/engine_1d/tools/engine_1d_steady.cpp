@@ -31,7 +31,6 @@
 using namespace hbt::engine_1d;
 
 namespace {
-constexpr double kRpm = M_PI / 30.0;
 
 struct Args {
   int speeds = 9, loads = 21, points = 0;
@@ -117,7 +116,7 @@ int main(int argc, char** argv) {
     int last_speed = -1, n_conv = 0, n_reg = 0;
     double sum_abs = 0, max_abs = 0, cpu_all = 0, sim_all = 0, sum_reg = 0, max_reg = 0;
     for (const Pt& q : grid) {
-      const double w = q.rpm * kRpm, treq = q.load * eng.fullLoadTorque(w);
+      const double w = hbt::units::rpmToRadps(q.rpm), treq = q.load * eng.fullLoadTorque(w);
       if (q.is != last_speed) eng.reset(w, treq, opt.ambient_T_K);
       last_speed = q.is;
       const SteadyPointResult sp = runSteadyPoint(eng, q.rpm, treq, opt);
@@ -153,7 +152,7 @@ int main(int argc, char** argv) {
           << err << "," << fuel << "," << fref << "," << o->air_mass_flow_kg_s << "," << o->lambda
           << "," << o->boost_pressure_Pa << "," << o->boost_target_Pa << ","
           << o->intake_manifold_T_K << "," << o->turbine_inlet_p_Pa << "," << o->turbine_inlet_T_K
-          << "," << o->peak_cylinder_pressure_Pa / 1e5 << "," << o->turbo_speed_rad_s / kRpm / 1e3
+          << "," << o->peak_cylinder_pressure_Pa / 1e5 << "," << hbt::units::radpsToRpm(o->turbo_speed_rad_s) / 1e3
           << "," << o->wastegate_opening << "," << o->nox_mass_flow_kg_s / (Tb * w) * 3.6e9 << ","
           << o->exhaust_T_K << "," << o->back_pressure_Pa << "," << o->smoke_limited << ","
           << conv << "," << t << "," << cpu << "," << imep_g / 1e5 << "," << pmep / 1e5 << ","

@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
         if (k % 10) return;  // 10 Hz
         std::fprintf(tf, "%.2f,%.3f,%.3f,%.2f,%d,%d,%.1f,%.3f,%.3f,%.1f,%.3f,%d\n", t, 3.6 * vt,
                      3.6 * o.speed_m_s, o.distance_m, o.gear, static_cast<int>(o.mode),
-                     o.engine_speed_rad_s * 30.0 / M_PI, o.accel_pedal, o.brake_pedal,
+                     hbt::units::radpsToRpm(o.engine_speed_rad_s), o.accel_pedal, o.brake_pedal,
                      e.brake_torque_Nm, 1000.0 * e.fuel_mass_flow_kg_s, o.stop_hold ? 1 : 0);
       };
     }
