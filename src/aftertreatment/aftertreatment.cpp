@@ -9,6 +9,9 @@
 namespace hbt::aftertreatment {
 
 namespace {
+// Fill ratio (stored NH3 / storage target) [-] taken when the target is 0: the store counts as
+// full and nothing is dosed.
+constexpr double kFullStoreFillRatio = 1e9;
 constexpr double kDH_CO = 283.0e3;     // J/mol CO -> CO2
 constexpr double kDH_NO2 = 57.1e3;     // J/mol NO + 1/2 O2 -> NO2
 constexpr double kDS_NO2 = -73.2;      // J/(mol K)
@@ -224,7 +227,7 @@ void Aftertreatment::doseUrea(StepState& s) {
   out_.anr = 0.0;
   if (s.T_scr_in >= p_.dosing_release_T_K && s.n_NOx > 0.0 && s.mcp > 0.0) {
     const double target = storageTarget_mol();
-    const double phi = target > 0.0 ? scr_->storedMol() / target : 1e9;
+    const double phi = target > 0.0 ? scr_->storedMol() / target : kFullStoreFillRatio;
     const double fill = std::clamp((p_.dosing_fill_stop - phi) / (p_.dosing_fill_stop - p_.dosing_fill_start), 0.0, 1.0);
     out_.anr = p_.dosing_anr * fill;
     s.n_NH3 = out_.anr * s.n_NOx;

@@ -9,6 +9,8 @@ namespace hbt::aftertreatment {
 
 namespace {
 constexpr double kSigma = 5.670374e-8;  // Stefan-Boltzmann [W/(m^2 K^4)]
+// Outer film resistance [m^2 K/W] where no external heat transfer acts: the can loses ~nothing.
+constexpr double kNoFilmResistance_m2K_W = 1e12;
 }  // namespace
 
 Brick::Brick(std::string name, const BrickParams& p, const HeatTransferParams& h, bool wall_flow)
@@ -56,7 +58,7 @@ double Brick::externalH(double T_wall_K, double T_amb_K, double v) const {
 
 double Brick::canUA(double T_wall_K, double T_amb_K, double v) const {
   const double he = externalH(T_wall_K, T_amb_K, v);
-  const double R = h_.insulation_thickness_m / h_.insulation_k_W_mK + (he > 0.0 ? 1.0 / he : 1e12);
+  const double R = h_.insulation_thickness_m / h_.insulation_k_W_mK + (he > 0.0 ? 1.0 / he : kNoFilmResistance_m2K_W);
   return A_can_slice_ / R;
 }
 

@@ -51,7 +51,7 @@ void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
   w_ = std::max(w_e, 0.0);
   s_ = distance_m;
   h_ = 0.0;
-  t_since_shift_ = 1e9;
+  t_since_shift_ = kNoShiftYet_s;
   T_in_est_ = T_ax_est_ = 0.0;
   brake_force_ = accel_pedal_ = idle_integral_ = crank_accel_ = 0.0;
   hold_ = start_request_ = locking_ = false;

@@ -201,7 +201,7 @@ class VehicleModel {
   double M_ = 0.0, J_E_ = 0.0, J_GI_ = 0.0, ia_r_ = 0.0, F_brake_max_ = 0.0;
 
   // State.
-  double v_ = 0.0, w_ = 0.0, s_ = 0.0, h_ = 0.0, t_since_shift_ = 1e9;
+  double v_ = 0.0, w_ = 0.0, s_ = 0.0, h_ = 0.0, t_since_shift_ = kNoShiftYet_s;
   GearState gs_;
   double T_in_est_ = 0.0, T_ax_est_ = 0.0;  // transmitted torques (loss evaluation)
   double brake_force_ = 0.0, accel_pedal_ = 0.0, idle_integral_ = 0.0;

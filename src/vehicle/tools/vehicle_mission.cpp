@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -88,7 +89,7 @@ int main(int argc, char** argv) {
     std::printf("speed RMSE          %10.3f km/h (max |error| %.2f km/h)\n", 3.6 * r.speed_rmse_m_s,
                 3.6 * r.max_speed_error_m_s);
     std::size_t n_stops = 0;
-    double min_frac = 1e9;
+    double min_frac = std::numeric_limits<double>::infinity();  // inf: no stop counted
     for (const auto& s : r.stops)
       if (s.t_start_s + s.duration_s <= r.duration_s) {
         ++n_stops;
