@@ -9,7 +9,9 @@
 namespace hbt::aftertreatment {
 
 namespace {
-constexpr double kPi = units::kPi;
+// Fill ratio (stored NH3 / storage target) [-] taken when the target is 0: the store counts as
+// full and nothing is dosed.
+constexpr double kFullStoreFillRatio = 1e9;
 constexpr double kDH_CO = 283.0e3;     // J/mol CO -> CO2
 constexpr double kDH_NO2 = 57.1e3;     // J/mol NO + 1/2 O2 -> NO2
 constexpr double kDS_NO2 = -73.2;      // J/(mol K)
@@ -132,6 +134,20 @@ PressureDrop Aftertreatment::brickPressureDrop(int b, double mdot, double T, dou
 }
 
 void Aftertreatment::step(double dt, const AtsInputs& in) {
+  checkStepInputs(dt, in);
+  StepState s = beginStep(dt, in);
+  stepDoc(in, s);
+  stepDpf(s);
+  doseUrea(s);
+  stepScr(s);
+  stepAsc(s);
+  updateBackPressure(in, s);
+  accumulateBalances(in, s);
+  updateOutputs(s);
+  updateLightOff(in, s);
+}
+
+void Aftertreatment::checkStepInputs(double dt, const AtsInputs& in) {
   checkInput(dt, "time step", true);
   checkInput(in.exhaust_mass_flow_kg_s, "exhaust mass flow", false);
   checkInput(in.exhaust_T_K, "exhaust temperature", true);
@@ -142,122 +158,139 @@ void Aftertreatment::step(double dt, const AtsInputs& in) {
   checkInput(in.ambient_p_Pa, "ambient pressure", true);
   checkInput(in.vehicle_speed_m_s, "vehicle speed", false);
   checkInput(in.comp.y_O2 + in.comp.y_CO2 + in.comp.y_H2O, "composition", false);
+}
 
-  const double mdot = in.exhaust_mass_flow_kg_s;
-  const double cp = cpMix(in.comp, in.exhaust_T_K);
-  const double M = molarMass(in.comp);
-  const double R = kRu / M;
-  const double n_tot = mdot / M;
-  const double mcp = mdot * cp;
-  const double Tamb = in.ambient_T_K, v = in.vehicle_speed_m_s;
-  const double x_O2 = in.comp.y_O2 * M / 0.031999;
+Aftertreatment::StepState Aftertreatment::beginStep(double dt, const AtsInputs& in) const {
+  StepState s;
+  s.dt = dt;
+  s.mdot = in.exhaust_mass_flow_kg_s;
+  s.cp = cpMix(in.comp, in.exhaust_T_K);
+  s.M = molarMass(in.comp);
+  s.R = kRu / s.M;
+  s.n_tot = s.mdot / s.M;
+  s.mcp = s.mdot * s.cp;
+  s.Tamb = in.ambient_T_K;
+  s.v = in.vehicle_speed_m_s;
+  s.x_O2 = in.comp.y_O2 * s.M / species::kO2_kg_mol;
+  return s;
+}
 
-  // ---------------- DOC ----------------
+// DOC: CO and HC oxidation and NO -> NO2 per slice at its wall temperature, then its thermal step.
+void Aftertreatment::stepDoc(const AtsInputs& in, StepState& s) {
   Brick& doc = *bricks_[kDOC];
-  const double n_NOx = in.nox_mass_flow_kg_s / kM_NO2;
-  double n_NO2 = p_.engine_no2_fraction * n_NOx;
+  s.n_NOx = in.nox_mass_flow_kg_s / kM_NO2;
+  s.n_NO2 = p_.engine_no2_fraction * s.n_NOx;
   double n_CO = in.co_mass_flow_kg_s / kM_CO, m_HC = in.hc_mass_flow_kg_s;
   const double n_CO_in = n_CO;
   {
     const double p = p_brick_[kDOC];
-    const double sqrt_pO2 = std::sqrt(std::max(0.0, x_O2 * p / kAtm_Pa));
+    const double sqrt_pO2 = std::sqrt(std::max(0.0, s.x_O2 * p / kAtm_Pa));
     for (int i = 0; i < doc.slices(); ++i) {
       const double T = doc.T(i);
       qr_[i] = 0.0;
-      if (n_tot <= 0.0) continue;
-      const double tau = doc.sliceVolume() / (n_tot * kRu * T / p);
+      if (s.n_tot <= 0.0) continue;
+      const double tau = doc.sliceVolume() / (s.n_tot * kRu * T / p);
       const double X_co = -std::expm1(-arrhenius(p_.doc_co_k_ref_1_s, p_.doc_co_E_J_mol, p_.doc_co_T_ref_K, T) * tau);
       const double X_hc = -std::expm1(-arrhenius(p_.doc_hc_k_ref_1_s, p_.doc_hc_E_J_mol, p_.doc_hc_T_ref_K, T) * tau);
       double dNO2 = 0.0;
-      if (n_NOx > 0.0 && sqrt_pO2 > 0.0) {
+      if (s.n_NOx > 0.0 && sqrt_pO2 > 0.0) {
         const double K = std::exp(-(-kDH_NO2 - T * kDS_NO2) / (kRu * T));
         const double f_eq = K * sqrt_pO2 / (1.0 + K * sqrt_pO2);
         const double kf = arrhenius(p_.doc_no_k_ref_1_s, p_.doc_no_E_J_mol, p_.doc_no_T_ref_K, T);
         const double kr = kf / (K * sqrt_pO2);
-        const double f = n_NO2 / n_NOx;
+        const double f = s.n_NO2 / s.n_NOx;
         const double f1 = f_eq + (f - f_eq) * std::exp(-(kf + kr) * tau);
-        dNO2 = (f1 - f) * n_NOx;
-        n_NO2 += dNO2;
+        dNO2 = (f1 - f) * s.n_NOx;
+        s.n_NO2 += dNO2;
       }
       qr_[i] = kDH_CO * n_CO * X_co + p_.hc_heating_value_J_kg * m_HC * X_hc + kDH_NO2 * dNO2;
       n_CO *= 1.0 - X_co;
       m_HC *= 1.0 - X_hc;
     }
   }
-  out_.doc_no2_fraction = n_NOx > 0.0 ? n_NO2 / n_NOx : 0.0;
+  out_.doc_no2_fraction = s.n_NOx > 0.0 ? s.n_NO2 / s.n_NOx : 0.0;
   out_.doc_co_conversion = n_CO_in > 0.0 ? 1.0 - n_CO / n_CO_in : 0.0;
-  BrickEnergy e[kNumBricks];
-  double Tg_in[kNumBricks], Tg_out[kNumBricks];
-  Tg_in[kDOC] = in.exhaust_T_K;
-  Tg_out[kDOC] = doc.stepThermal(dt, mdot, cp, Tg_in[kDOC], qr_.data(), Tamb, v, e[kDOC]);
+  s.Tg_in[kDOC] = in.exhaust_T_K;
+  s.Tg_out[kDOC] = doc.stepThermal(s.dt, s.mdot, s.cp, s.Tg_in[kDOC], qr_.data(), s.Tamb, s.v, s.e[kDOC]);
+}
 
-  // ---------------- DPF ----------------
-  Tg_in[kDPF] = Tg_out[kDOC];
-  Tg_out[kDPF] = bricks_[kDPF]->stepThermal(dt, mdot, cp, Tg_in[kDPF], nullptr, Tamb, v, e[kDPF]);
+// DPF: thermal step only (constant soot load, no reaction).
+void Aftertreatment::stepDpf(StepState& s) {
+  s.Tg_in[kDPF] = s.Tg_out[kDOC];
+  s.Tg_out[kDPF] =
+      bricks_[kDPF]->stepThermal(s.dt, s.mdot, s.cp, s.Tg_in[kDPF], nullptr, s.Tamb, s.v, s.e[kDPF]);
+}
 
-  // ---------------- dosing ----------------
-  Brick& scr = *bricks_[kSCR];
-  double n_NH3 = 0.0, adblue = 0.0, Q_adblue = 0.0;
-  double T_scr_in = Tg_out[kDPF];
+// Urea dosing at the SCR inlet (storage controller) and the gas cooling by its evaporation.
+void Aftertreatment::doseUrea(StepState& s) {
+  s.T_scr_in = s.Tg_out[kDPF];
   out_.anr = 0.0;
-  if (T_scr_in >= p_.dosing_release_T_K && n_NOx > 0.0 && mcp > 0.0) {
+  if (s.T_scr_in >= p_.dosing_release_T_K && s.n_NOx > 0.0 && s.mcp > 0.0) {
     const double target = storageTarget_mol();
-    const double phi = target > 0.0 ? scr_->storedMol() / target : 1e9;
-    const double s = std::clamp((p_.dosing_fill_stop - phi) / (p_.dosing_fill_stop - p_.dosing_fill_start), 0.0, 1.0);
-    out_.anr = p_.dosing_anr * s;
-    n_NH3 = out_.anr * n_NOx;
-    adblue = 0.5 * n_NH3 * kM_urea / p_.adblue_urea_mass_fraction;
-    Q_adblue = adblue * p_.adblue_heat_J_kg;
+    const double phi = target > 0.0 ? scr_->storedMol() / target : kFullStoreFillRatio;
+    const double fill = std::clamp((p_.dosing_fill_stop - phi) / (p_.dosing_fill_stop - p_.dosing_fill_start), 0.0, 1.0);
+    out_.anr = p_.dosing_anr * fill;
+    s.n_NH3 = out_.anr * s.n_NOx;
+    s.adblue = 0.5 * s.n_NH3 * kM_urea / p_.adblue_urea_mass_fraction;
+    s.Q_adblue = s.adblue * p_.adblue_heat_J_kg;
     // never cool the gas below ambient by evaporation (tiny flows)
-    Q_adblue = std::min(Q_adblue, std::max(0.0, mcp * (T_scr_in - Tamb)));
-    T_scr_in -= Q_adblue / mcp;
+    s.Q_adblue = std::min(s.Q_adblue, std::max(0.0, s.mcp * (s.T_scr_in - s.Tamb)));
+    s.T_scr_in -= s.Q_adblue / s.mcp;
   }
+}
 
-  // ---------------- SCR ----------------
+// SCR: NH3 storage and NOx reduction (ScrStorage, CVODE), then its thermal step.
+void Aftertreatment::stepScr(StepState& s) {
+  Brick& scr = *bricks_[kSCR];
   ScrInlet si;
-  si.n_NO_mol_s = n_NOx - n_NO2;
-  si.n_NO2_mol_s = n_NO2;
-  si.n_NH3_mol_s = n_NH3;
-  si.n_total_mol_s = n_tot;
+  si.n_NO_mol_s = s.n_NOx - s.n_NO2;
+  si.n_NO2_mol_s = s.n_NO2;
+  si.n_NH3_mol_s = s.n_NH3;
+  si.n_total_mol_s = s.n_tot;
   si.p_Pa = p_brick_[kSCR];
   for (int i = 0; i < scr.slices(); ++i) T_scr_[i] = scr.T(i);
-  const ScrStepResult r = scr_->step(dt, si, T_scr_.data(), heat_J_.data());
-  for (int i = 0; i < scr.slices(); ++i) qr_[i] = heat_J_[i] / dt;
-  Tg_in[kSCR] = T_scr_in;
-  Tg_out[kSCR] = scr.stepThermal(dt, mdot, cp, T_scr_in, qr_.data(), Tamb, v, e[kSCR]);
-  const double nox_in_mol = n_NOx * dt;
-  const double nox_out_mol = std::max(0.0, nox_in_mol - r.std_mol - 2.0 * r.fast_mol - r.no2_mol);
+  s.scr = scr_->step(s.dt, si, T_scr_.data(), heat_J_.data());
+  for (int i = 0; i < scr.slices(); ++i) qr_[i] = heat_J_[i] / s.dt;
+  s.Tg_in[kSCR] = s.T_scr_in;
+  s.Tg_out[kSCR] = scr.stepThermal(s.dt, s.mdot, s.cp, s.T_scr_in, qr_.data(), s.Tamb, s.v, s.e[kSCR]);
+  s.nox_in_mol = s.n_NOx * s.dt;
+  s.nox_out_mol = std::max(0.0, s.nox_in_mol - s.scr.std_mol - 2.0 * s.scr.fast_mol - s.scr.no2_mol);
+}
 
-  // ---------------- ASC ----------------
+// ASC: NH3 slip oxidised per slice, then its thermal step.
+void Aftertreatment::stepAsc(StepState& s) {
   Brick& asc = *bricks_[kASC];
-  double n_slip = r.nh3_slip_mol / dt;
-  const double n_slip_in = n_slip;
+  s.n_slip = s.scr.nh3_slip_mol / s.dt;
+  s.n_slip_in = s.n_slip;
   for (int i = 0; i < asc.slices(); ++i) {
     qr_[i] = 0.0;
-    if (n_tot <= 0.0 || n_slip <= 0.0) continue;
+    if (s.n_tot <= 0.0 || s.n_slip <= 0.0) continue;
     const double T = asc.T(i);
-    const double tau = asc.sliceVolume() / (n_tot * kRu * T / p_brick_[kASC]);
+    const double tau = asc.sliceVolume() / (s.n_tot * kRu * T / p_brick_[kASC]);
     const double X = -std::expm1(-arrhenius(p_.asc_k_ref_1_s, p_.asc_E_J_mol, p_.asc_T_ref_K, T) * tau);
-    qr_[i] = kDH_NH3ox * n_slip * X;
-    n_slip *= 1.0 - X;
+    qr_[i] = kDH_NH3ox * s.n_slip * X;
+    s.n_slip *= 1.0 - X;
   }
-  Tg_in[kASC] = Tg_out[kSCR];
-  Tg_out[kASC] = asc.stepThermal(dt, mdot, cp, Tg_in[kASC], qr_.data(), Tamb, v, e[kASC]);
+  s.Tg_in[kASC] = s.Tg_out[kSCR];
+  s.Tg_out[kASC] = asc.stepThermal(s.dt, s.mdot, s.cp, s.Tg_in[kASC], qr_.data(), s.Tamb, s.v, s.e[kASC]);
+}
 
-  // ---------------- pressure ----------------
+// Pressure from the tailpipe (ambient) upstream: muffler, then each brick at its mean gas
+// temperature; the brick pressures of the next step and the back-pressure.
+void Aftertreatment::updateBackPressure(const AtsInputs& in, const StepState& s) {
   double p = in.ambient_p_Pa;
   {
-    const double T = Tg_out[kASC];
-    const double rho = p / (R * T);
-    const double A = 0.25 * kPi * p_.pipe_diameter_m * p_.pipe_diameter_m;
-    const double u = mdot / (rho * A);
+    const double T = s.Tg_out[kASC];
+    const double rho = p / (s.R * T);
+    const double A = 0.25 * units::kPi * p_.pipe_diameter_m * p_.pipe_diameter_m;
+    const double u = s.mdot / (rho * A);
     out_.muffler_dp_Pa = p_.muffler_k * 0.5 * rho * u * u;
     p += out_.muffler_dp_Pa;
   }
   for (int b = kASC; b >= kDOC; --b) {
-    const double T = 0.5 * (Tg_in[b] + Tg_out[b]);
-    const double rho = p / (R * T);
-    const PressureDrop dp = bricks_[b]->pressureDrop(mdot / rho, T, rho, b == kDPF ? &dpf_ : nullptr,
+    const double T = 0.5 * (s.Tg_in[b] + s.Tg_out[b]);
+    const double rho = p / (s.R * T);
+    const PressureDrop dp = bricks_[b]->pressureDrop(s.mdot / rho, T, rho, b == kDPF ? &dpf_ : nullptr,
                                                      p_.contraction_k);
     out_.brick_dp_Pa[b] = dp.total();
     p_brick_[b] = p + 0.5 * dp.total();
@@ -266,41 +299,53 @@ void Aftertreatment::step(double dt, const AtsInputs& in) {
   if (!std::isfinite(p))
     throw ModelDivergence("aftertreatment", "back-pressure", "non-physical value");
   out_.back_pressure_Pa = p;
+}
 
-  // ---------------- balances and outputs ----------------
+// Cumulative energy and nitrogen balances.
+void Aftertreatment::accumulateBalances(const AtsInputs& in, const StepState& s) {
+  const double dt = s.dt;
+  const ScrStepResult& r = s.scr;
   for (int b = 0; b < kNumBricks; ++b) {
-    energy_.can_loss_J += e[b].can_loss_J;
-    energy_.reaction_heat_J += e[b].reaction_J;
+    energy_.can_loss_J += s.e[b].can_loss_J;
+    energy_.reaction_heat_J += s.e[b].reaction_J;
     out_.brick_T_K[b] = bricks_[b]->meanT();
-    out_.brick_out_T_K[b] = Tg_out[b];
+    out_.brick_out_T_K[b] = s.Tg_out[b];
   }
-  energy_.reaction_heat_J -= Q_adblue * dt;
-  energy_.enthalpy_in_J += mcp * (in.exhaust_T_K - kT_ref_K) * dt;
-  energy_.enthalpy_out_J += mcp * (Tg_out[kASC] - kT_ref_K) * dt;
+  energy_.reaction_heat_J -= s.Q_adblue * dt;
+  energy_.enthalpy_in_J += s.mcp * (in.exhaust_T_K - kT_ref_K) * dt;
+  energy_.enthalpy_out_J += s.mcp * (s.Tg_out[kASC] - kT_ref_K) * dt;
   energy_.stored_change_J = energyStored() - E0_;
 
-  n_.nh3_dosed_mol += n_NH3 * dt;
+  n_.nh3_dosed_mol += s.n_NH3 * dt;
   n_.nh3_scr_reacted_mol += r.std_mol + 2.0 * r.fast_mol + (4.0 / 3.0) * r.no2_mol;
   n_.nh3_scr_oxidised_mol += r.ox_mol;
   n_.nh3_scr_slip_mol += r.nh3_slip_mol;
-  n_.nh3_asc_oxidised_mol += (n_slip_in - n_slip) * dt;
-  n_.nh3_tailpipe_mol += n_slip * dt;
-  n_.nox_scr_in_mol += nox_in_mol;
-  n_.nox_scr_out_mol += nox_out_mol;
+  n_.nh3_asc_oxidised_mol += (s.n_slip_in - s.n_slip) * dt;
+  n_.nh3_tailpipe_mol += s.n_slip * dt;
+  n_.nox_scr_in_mol += s.nox_in_mol;
+  n_.nox_scr_out_mol += s.nox_out_mol;
   n_.nh3_stored_change_mol = scr_->storedMol() - stored0_;
+}
 
-  out_.outlet_T_K = Tg_out[kASC];
-  out_.tailpipe_nox_kg_s = nox_out_mol / dt * kM_NO2;
-  out_.tailpipe_nox_kg += nox_out_mol * kM_NO2;
-  out_.engine_nox_kg += nox_in_mol * kM_NO2;
-  out_.nh3_slip_kg_s = n_slip * kM_NH3;
-  out_.nh3_slip_kg += n_slip * dt * kM_NH3;
-  out_.adblue_kg_s = adblue;
-  out_.adblue_kg += adblue * dt;
-  out_.urea_kg += adblue * dt * p_.adblue_urea_mass_fraction;
-  out_.nox_conversion = nox_in_mol > 0.0 ? 1.0 - nox_out_mol / nox_in_mol : 0.0;
+// Tailpipe flows, cumulative masses and the step's SCR conversion.
+void Aftertreatment::updateOutputs(const StepState& s) {
+  const double dt = s.dt;
+  out_.outlet_T_K = s.Tg_out[kASC];
+  out_.tailpipe_nox_kg_s = s.nox_out_mol / dt * kM_NO2;
+  out_.tailpipe_nox_kg += s.nox_out_mol * kM_NO2;
+  out_.engine_nox_kg += s.nox_in_mol * kM_NO2;
+  out_.nh3_slip_kg_s = s.n_slip * kM_NH3;
+  out_.nh3_slip_kg += s.n_slip * dt * kM_NH3;
+  out_.adblue_kg_s = s.adblue;
+  out_.adblue_kg += s.adblue * dt;
+  out_.urea_kg += s.adblue * dt * p_.adblue_urea_mass_fraction;
+  out_.nox_conversion = s.nox_in_mol > 0.0 ? 1.0 - s.nox_out_mol / s.nox_in_mol : 0.0;
   out_.nh3_stored_mol = scr_->storedMol();
+}
 
+// Filtered SCR conversion and the light-off time; advances the clock.
+void Aftertreatment::updateLightOff(const AtsInputs& in, const StepState& s) {
+  const double dt = s.dt;
   const double a = p_.lightoff_filter_s > 0.0 ? -std::expm1(-dt / p_.lightoff_filter_s) : 1.0;
   F_in_ += a * (in.nox_mass_flow_kg_s - F_in_);
   F_out_ += a * (out_.tailpipe_nox_kg_s - F_out_);
@@ -310,7 +355,7 @@ void Aftertreatment::step(double dt, const AtsInputs& in) {
   out_.light_off = enough && out_.nox_conversion_filtered >= p_.lightoff_conversion &&
                    out_.brick_T_K[kSCR] >= p_.dosing_release_T_K;
   if (out_.light_off && out_.light_off_time_s < 0.0) out_.light_off_time_s = t_;
-  T_amb_last_ = Tamb;
+  T_amb_last_ = s.Tamb;
 }
 
 }  // namespace hbt::aftertreatment

@@ -150,6 +150,34 @@ class Aftertreatment {
   double storageTarget_mol() const;
 
  private:
+  // The quantities of one step that its stages pass on (inputs held over dt).
+  struct StepState {
+    double dt = 0;                          // [s]
+    double mdot = 0, cp = 0;                // exhaust mass flow [kg/s], cp at the inlet [J/(kg K)]
+    double M = 0, R = 0;                    // molar mass [kg/mol], gas constant [J/(kg K)]
+    double n_tot = 0, mcp = 0;              // molar flow [mol/s], mdot cp [W/K]
+    double Tamb = 0, v = 0;                 // ambient [K], vehicle speed [m/s]
+    double x_O2 = 0;                        // O2 mole fraction [-]
+    double n_NOx = 0, n_NO2 = 0;            // NOx and NO2 leaving the DOC [mol/s]
+    double n_NH3 = 0, adblue = 0;           // NH3 dosed [mol/s], AdBlue [kg/s]
+    double Q_adblue = 0, T_scr_in = 0;      // evaporation heat [W], gas entering the SCR [K]
+    ScrStepResult scr{};                    // SCR amounts of the step [mol]
+    double nox_in_mol = 0, nox_out_mol = 0; // NOx into and out of the SCR over the step [mol]
+    double n_slip = 0, n_slip_in = 0;       // NH3 leaving and entering the ASC [mol/s]
+    BrickEnergy e[kNumBricks]{};            // energy terms of each brick's thermal step
+    double Tg_in[kNumBricks]{}, Tg_out[kNumBricks]{};  // gas entering / leaving each brick [K]
+  };
+  static void checkStepInputs(double dt, const AtsInputs& in);
+  StepState beginStep(double dt, const AtsInputs& in) const;
+  void stepDoc(const AtsInputs& in, StepState& s);
+  void stepDpf(StepState& s);
+  void doseUrea(StepState& s);
+  void stepScr(StepState& s);
+  void stepAsc(StepState& s);
+  void updateBackPressure(const AtsInputs& in, const StepState& s);
+  void accumulateBalances(const AtsInputs& in, const StepState& s);
+  void updateOutputs(const StepState& s);
+  void updateLightOff(const AtsInputs& in, const StepState& s);
   double energyStored() const;
   AtsParams p_;
   DpfFlowParams dpf_;

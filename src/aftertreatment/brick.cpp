@@ -8,13 +8,14 @@
 namespace hbt::aftertreatment {
 
 namespace {
-constexpr double kPi = units::kPi;
 constexpr double kSigma = 5.670374e-8;  // Stefan-Boltzmann [W/(m^2 K^4)]
+// Outer film resistance [m^2 K/W] where no external heat transfer acts: the can loses ~nothing.
+constexpr double kNoFilmResistance_m2K_W = 1e12;
 }  // namespace
 
 Brick::Brick(std::string name, const BrickParams& p, const HeatTransferParams& h, bool wall_flow)
     : name_(std::move(name)), p_(p), h_(h), wall_flow_(wall_flow), n_(p.slices) {
-  A_ = 0.25 * kPi * p.diameter_m * p.diameter_m;
+  A_ = 0.25 * units::kPi * p.diameter_m * p.diameter_m;
   V_ = A_ * p.length_m;
   pitch_ = 0.0254 / std::sqrt(p.cpsi);
   w_ = p.wall_thickness_mil * 25.4e-6;
@@ -25,7 +26,7 @@ Brick::Brick(std::string name, const BrickParams& p, const HeatTransferParams& h
                    V_ * p.washcoat_g_L * p.washcoat_cp_J_kgK  // g/L == kg/m^3
                    + p.can_mass_kg * p.can_cp_J_kgK;
   C_slice_ = C / n_;
-  A_can_slice_ = kPi * (p.diameter_m + 2.0 * h.insulation_thickness_m) * p.length_m / n_ *
+  A_can_slice_ = units::kPi * (p.diameter_m + 2.0 * h.insulation_thickness_m) * p.length_m / n_ *
                  h.can_length_factor;
   T_.assign(n_, 298.15);
 }
@@ -45,7 +46,7 @@ double Brick::externalH(double T_wall_K, double T_amb_K, double v) const {
   const double u = h_.underbody_air_factor * v;
   if (u > 0.0) {
     // Air film at the mean of can and ambient temperature (ambient pressure).
-    const double rho = kAtm_Pa / (287.05 * Tm);
+    const double rho = kAtm_Pa / (species::kDryAirGas_J_kgK * Tm);
     const double Dc = p_.diameter_m + 2.0 * h_.insulation_thickness_m;
     const double Re = rho * u * Dc / viscosity(Tm);
     const double Pr13 = std::cbrt(0.70);
@@ -57,7 +58,7 @@ double Brick::externalH(double T_wall_K, double T_amb_K, double v) const {
 
 double Brick::canUA(double T_wall_K, double T_amb_K, double v) const {
   const double he = externalH(T_wall_K, T_amb_K, v);
-  const double R = h_.insulation_thickness_m / h_.insulation_k_W_mK + (he > 0.0 ? 1.0 / he : 1e12);
+  const double R = h_.insulation_thickness_m / h_.insulation_k_W_mK + (he > 0.0 ? 1.0 / he : kNoFilmResistance_m2K_W);
   return A_can_slice_ / R;
 }
 

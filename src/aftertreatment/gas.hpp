@@ -9,6 +9,7 @@
 //   k(T)  = 0.0241 (T/273.15)^0.81 [W/(m K)] (power-law fit to air, 250-1000 K, +-3 %).
 // Exhaust gas at lambda > 1.3 is ~75 % N2: the air values of mu and k are within a few percent.
 #pragma once
+#include "common/species.hpp"
 #include "common/units.hpp"
 #include <algorithm>
 #include <cmath>
@@ -17,10 +18,10 @@ namespace hbt::aftertreatment {
 
 constexpr double kRu = units::kUniversalGas_J_molK;  // J/(mol K)
 constexpr double kAtm_Pa = units::kStandardAtmosphere_Pa;
-constexpr double kM_NO2 = 0.046006;       // kg/mol (NOx is reported as NO2)
-constexpr double kM_NH3 = 0.017031;
-constexpr double kM_CO = 0.028010;
-constexpr double kM_urea = 0.060056;
+constexpr double kM_NO2 = species::kNO2_kg_mol;  // kg/mol (NOx is reported as NO2)
+constexpr double kM_NH3 = species::kNH3_kg_mol;  // kg/mol
+constexpr double kM_CO = species::kCO_kg_mol;    // kg/mol
+constexpr double kM_urea = species::kUrea_kg_mol;  // kg/mol
 constexpr double kT_ref_K = 298.15;       // enthalpy reference of the energy balance
 
 struct GasComposition {
@@ -37,7 +38,8 @@ inline double cpMix(const GasComposition& g, double T) {
 /// Molar mass [kg/mol]; everything that is not O2, CO2, H2O counts as N2.
 inline double molarMass(const GasComposition& g) {
   const double yN2 = std::max(0.0, 1.0 - g.y_O2 - g.y_CO2 - g.y_H2O);
-  return 1.0 / (g.y_O2 / 0.031999 + g.y_CO2 / 0.044010 + g.y_H2O / 0.018015 + yN2 / 0.028013);
+  return 1.0 / (g.y_O2 / species::kO2_kg_mol + g.y_CO2 / species::kCO2_kg_mol +
+                g.y_H2O / species::kH2O_kg_mol + yN2 / species::kN2_kg_mol);
 }
 
 inline double viscosity(double T) {

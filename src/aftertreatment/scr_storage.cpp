@@ -1,15 +1,13 @@
 #include "aftertreatment/scr_storage.hpp"
 
-#include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "aftertreatment/gas.hpp"
+#include "common/cvode_solver.hpp"
 #include "common/errors.hpp"
 
 namespace hbt::aftertreatment {
@@ -25,54 +23,21 @@ int rhsCallback(realtype, N_Vector y, N_Vector yd, void* ud) {
 }
 }  // namespace
 
-struct ScrStorage::Impl {
-  SUNContext ctx = nullptr;
-  void* mem = nullptr;
-  N_Vector y = nullptr, atol = nullptr;
-  SUNMatrix A = nullptr;
-  SUNLinearSolver LS = nullptr;
-  int neq = 0;
-};
-
 ScrStorage::ScrStorage(const ScrKinetics& k, int slices, double Vs, double rtol, double atol_theta,
                        int max_steps)
-    : impl_(new Impl), k_(k), n_(slices), Vs_(Vs), rtol_(rtol), atol_theta_(atol_theta),
+    : k_(k), n_(slices), Vs_(Vs), rtol_(rtol), atol_theta_(atol_theta),
       max_steps_(max_steps), theta_(slices, 0.0), Vdot_(slices), kd_(slices), bT_(slices),
       kstd_(slices), kfast_(slices), kno2_(slices), kox_(slices), scratch_(2 * slices + 5) {
-  Impl& m = *impl_;
-  m.neq = 2 * n_ + 5;
-  if (SUNContext_Create(nullptr, &m.ctx) != 0)
-    throw ModelDivergence("aftertreatment SCR", "CVODE", "SUNContext_Create failed");
-  m.y = N_VNew_Serial(m.neq, m.ctx);
-  m.atol = N_VNew_Serial(m.neq, m.ctx);
-  m.mem = CVodeCreate(CV_BDF, m.ctx);
-  m.A = SUNDenseMatrix(m.neq, m.neq, m.ctx);
-  m.LS = SUNLinSol_Dense(m.y, m.A, m.ctx);
-  if (!m.y || !m.atol || !m.mem || !m.A || !m.LS)
-    throw ModelDivergence("aftertreatment SCR", "CVODE", "allocation of solver memory failed");
-  double* y = N_VGetArrayPointer(m.y);
-  double* a = N_VGetArrayPointer(m.atol);
-  for (int i = 0; i < m.neq; ++i) y[i] = 0.0;
-  for (int i = 0; i < n_; ++i) a[i] = atol_theta_;
-  for (int i = n_; i < n_ + 5; ++i) a[i] = 1e-14;     // mol
-  for (int i = n_ + 5; i < m.neq; ++i) a[i] = 1e-8;   // J
-  if (CVodeInit(m.mem, &rhsCallback, 0.0, m.y) != CV_SUCCESS ||
-      CVodeSVtolerances(m.mem, rtol_, m.atol) != CV_SUCCESS ||
-      CVodeSetLinearSolver(m.mem, m.LS, m.A) != CV_SUCCESS ||
-      CVodeSetUserData(m.mem, this) != CV_SUCCESS ||
-      CVodeSetMaxNumSteps(m.mem, max_steps_) != CV_SUCCESS)
-    throw ModelDivergence("aftertreatment SCR", "CVODE", "solver set-up failed");
+  const int neq = 2 * n_ + 5;
+  std::vector<double> atol(neq);
+  for (int i = 0; i < n_; ++i) atol[i] = atol_theta_;
+  for (int i = n_; i < n_ + 5; ++i) atol[i] = 1e-14;  // mol
+  for (int i = n_ + 5; i < neq; ++i) atol[i] = 1e-8;  // J
+  cvode_ = std::make_unique<CvodeSolver>("aftertreatment SCR", neq, &rhsCallback, this, rtol_, atol,
+                                         max_steps_);
 }
 
-ScrStorage::~ScrStorage() {
-  Impl& m = *impl_;
-  if (m.mem) CVodeFree(&m.mem);
-  if (m.LS) SUNLinSolFree(m.LS);
-  if (m.A) SUNMatDestroy(m.A);
-  if (m.y) N_VDestroy(m.y);
-  if (m.atol) N_VDestroy(m.atol);
-  if (m.ctx) SUNContext_Free(&m.ctx);
-}
+ScrStorage::~ScrStorage() = default;
 
 void ScrStorage::setCoverage(double theta) { std::fill(theta_.begin(), theta_.end(), theta); }
 
@@ -149,7 +114,6 @@ void ScrStorage::rhs(const double* y, double* yd, double* out) const {
 }
 
 ScrStepResult ScrStorage::step(double dt, const ScrInlet& in, const double* T_K, double* heat_J) {
-  Impl& m = *impl_;
   in_ = in;
   for (int i = 0; i < n_; ++i) {
     const double T = T_K[i];
@@ -161,19 +125,12 @@ ScrStepResult ScrStorage::step(double dt, const ScrInlet& in, const double* T_K,
     kno2_[i] = k_.k_no2_ref * std::exp(-k_.E_no2 / kRu * (1.0 / T - 1.0 / k_.T_ref));
     kox_[i] = k_.k_ox_ref * std::exp(-k_.E_ox / kRu * (1.0 / T - 1.0 / k_.T_ox_ref));
   }
-  double* y = N_VGetArrayPointer(m.y);
+  double* y = cvode_->y();
   for (int i = 0; i < n_; ++i) y[i] = theta_[i];
-  for (int i = n_; i < m.neq; ++i) y[i] = 0.0;
-  if (CVodeReInit(m.mem, 0.0, m.y) != CV_SUCCESS || CVodeSetStopTime(m.mem, dt) != CV_SUCCESS)
-    throw ModelDivergence("aftertreatment SCR", "NH3 coverage", "CVODE re-initialisation failed");
-  realtype t = 0.0;
-  const int flag = CVode(m.mem, dt, m.y, &t, CV_NORMAL);
-  if (flag < 0)
-    throw ModelDivergence("aftertreatment SCR", "NH3 coverage",
-                          "CVODE failed with flag " + std::to_string(flag));
-  long nst = 0;
-  CVodeGetNumSteps(m.mem, &nst);
-  steps_ += nst;
+  for (int i = n_; i < cvode_->size(); ++i) y[i] = 0.0;
+  cvode_->reinit();
+  cvode_->setStopTime(dt);
+  steps_ += cvode_->advance(dt, "NH3 coverage");
   ScrStepResult r;
   for (int i = 0; i < n_; ++i) {
     if (!std::isfinite(y[i]) || y[i] < -1e-6 || y[i] > 1.0 + 1e-6)

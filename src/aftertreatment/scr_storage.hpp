@@ -34,6 +34,10 @@
 #include <memory>
 #include <vector>
 
+namespace hbt {
+class CvodeSolver;
+}
+
 namespace hbt::aftertreatment {
 
 struct ScrKinetics {
@@ -86,8 +90,7 @@ class ScrStorage {
   void rhs(const double* y, double* yd, double* out_flows = nullptr) const;
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<CvodeSolver> cvode_;  // state: coverages, then 5 amounts [mol], then heats [J]
   ScrKinetics k_;
   int n_;
   double Vs_;

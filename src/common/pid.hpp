@@ -8,9 +8,12 @@
 
 namespace hbt {
 
+// Output limit [output unit] that never binds: the default of an unlimited controller.
+constexpr double kPidUnlimited = 1e300;
+
 struct PidGains {
   double kp = 0.0, ki = 0.0, kd = 0.0;
-  double u_min = -1e300, u_max = 1e300;
+  double u_min = -kPidUnlimited, u_max = kPidUnlimited;
 };
 
 class Pid {

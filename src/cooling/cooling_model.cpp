@@ -121,74 +121,98 @@ void CoolingModel::step(double dt_s, const CoolingInputs& in) {
 }
 
 void CoolingModel::substep(double h, const CoolingInputs& in) {
+  SubstepState s;
+  s.h = h;
+  s.Ta = in.ambient_T_K;
+  const double rho_air = in.ambient_p_Pa / (p_.air.R_J_kgK * s.Ta);
+  s.w_p = std::max(0.0, in.pump_speed_rad_s);
+  htPumpAndThermostat(s);
+  fanAndAirFlow(in, rho_air, s);
+  ltPump(s);
+  s.G_lt = rad_lt_.conductance_W_K(s.m_air, s.m_lt);
+  s.G_ht = rad_ht_.conductance_W_K(s.m_air, s.m_rad);
+  s.pre = s.C_air > 0.0 ? s.G_lt / s.C_air : 0.0;  // T_air,HT,in - T_a = pre θ_l
+  heaterLoad(s);
+  const double T_c_old = T_c_;
+  solveTemperatures(in, s);
+  updateLags(in, s);
+  recordOutputs(in, s, T_c_old);
+}
+
+// HT pump (∝ speed) and the thermostat's radiator share of its flow, frozen at the start.
+void CoolingModel::htPumpAndThermostat(SubstepState& s) const {
   const auto& ht = p_.ht;
+  const double xp = s.w_p / ht.pump_rated_speed_rad_s;
+  s.q_pump = ht.pump_rated_flow_m3_s * xp;
+  s.pump_W = ht.pump_rated_head_Pa * ht.pump_rated_flow_m3_s * xp * xp * xp / ht.pump_efficiency;
+  s.y = openingFromPlay(T_p_);
+  const double y_eff = p_.thermostat.leak_fraction + (1.0 - p_.thermostat.leak_fraction) * s.y;
+  s.q_rad = y_eff * s.q_pump;
+  s.m_rad = ht.coolant_density_kg_m3 * s.q_rad;
+}
+
+// Viscous fan at its clutch engagement and the air flow through the radiators.
+void CoolingModel::fanAndAirFlow(const CoolingInputs& in, double rho_air, SubstepState& s) const {
   const auto& f = p_.fan;
+  const double w_fan_in = s.w_p * f.drive_ratio;
+  s.n_fan = w_fan_in * (f.min_speed_ratio + (f.max_speed_ratio - f.min_speed_ratio) * eng_);
+  s.air = airPath(s.n_fan, in.vehicle_speed_m_s, rho_air);
+  s.fan_drive_W =
+      s.air.power_W > 0.0 && s.n_fan > 0.0 ? s.air.power_W * w_fan_in / s.n_fan : s.air.power_W;
+  s.m_air = rho_air * s.air.flow_m3_s;
+  s.C_air = s.m_air * p_.air.cp_J_kgK;
+}
+
+// LT pump: its (lagged) speed, limited by its drive, flow and powers.
+void CoolingModel::ltPump(SubstepState& s) const {
   const auto& l = p_.lt;
-  const double Ta = in.ambient_T_K;
-  const double rho_air = in.ambient_p_Pa / (p_.air.R_J_kgK * Ta);
-  const double w_p = std::max(0.0, in.pump_speed_rad_s);
+  const double w_lt_in = s.w_p * l.pump_drive_ratio;
+  s.w_lt = std::min(w_lt_, w_lt_in);
+  const double xl = s.w_lt / l.pump_max_speed_rad_s;
+  s.m_lt = p_.ht.coolant_density_kg_m3 * l.pump_rated_flow_m3_s * xl;
+  s.lt_hyd_W = l.pump_rated_head_Pa * l.pump_rated_flow_m3_s * xl * xl * xl;
+  const double lt_shaft_W = s.lt_hyd_W / l.pump_efficiency;
+  s.lt_in_W = s.w_lt > 0.0 ? lt_shaft_W * w_lt_in / s.w_lt : 0.0;
+}
 
-  // Frozen coefficients at the start of the substep.
-  const double xp = w_p / ht.pump_rated_speed_rad_s;
-  const double q_pump = ht.pump_rated_flow_m3_s * xp;
-  const double pump_W = ht.pump_rated_head_Pa * ht.pump_rated_flow_m3_s * xp * xp * xp / ht.pump_efficiency;
-  const double y = openingFromPlay(T_p_);
-  const double y_eff = p_.thermostat.leak_fraction + (1.0 - p_.thermostat.leak_fraction) * y;
-  const double q_rad = y_eff * q_pump;
-  const double m_rad = ht.coolant_density_kg_m3 * q_rad;
-
-  const double w_fan_in = w_p * f.drive_ratio;
-  const double n_fan = w_fan_in * (f.min_speed_ratio + (f.max_speed_ratio - f.min_speed_ratio) * eng_);
-  const AirPoint air = airPath(n_fan, in.vehicle_speed_m_s, rho_air);
-  const double fan_drive_W = air.power_W > 0.0 && n_fan > 0.0 ? air.power_W * w_fan_in / n_fan : air.power_W;
-  const double m_air = rho_air * air.flow_m3_s;
-  const double C_air = m_air * p_.air.cp_J_kgK;
-
-  const double w_lt_in = w_p * l.pump_drive_ratio;
-  const double w_lt = std::min(w_lt_, w_lt_in);
-  const double xl = w_lt / l.pump_max_speed_rad_s;
-  const double m_lt = ht.coolant_density_kg_m3 * l.pump_rated_flow_m3_s * xl;
-  const double lt_hyd_W = l.pump_rated_head_Pa * l.pump_rated_flow_m3_s * xl * xl * xl;
-  const double lt_shaft_W = lt_hyd_W / l.pump_efficiency;
-  const double lt_in_W = w_lt > 0.0 ? lt_shaft_W * w_lt_in / w_lt : 0.0;
-
-  const double G_lt = rad_lt_.conductance_W_K(m_air, m_lt);
-  const double G_ht = rad_ht_.conductance_W_K(m_air, m_rad);
-  const double pre = C_air > 0.0 ? G_lt / C_air : 0.0;  // T_air,HT,in - T_a = pre θ_l
-
-  double q_h_const = 0.0, g_h = 0.0;
+// Cabin heater: the valve (with its lockout hysteresis) and the heat it takes, either the
+// cabin's demand (constant) or, when the coolant cannot deliver it, a conductance.
+void CoolingModel::heaterLoad(SubstepState& s) {
   const auto& hp = p_.heater;
   if (T_c_ >= hp.min_coolant_K) heater_valve_open_ = true;
   if (T_c_ < hp.min_coolant_K - hp.lockout_hysteresis_K) heater_valve_open_ = false;
-  if (Ta < hp.balance_temperature_K && heater_valve_open_) {
-    const double demand = hp.cabin_UA_W_K * (hp.balance_temperature_K - Ta);
-    if (hp.conductance_W_K * (T_c_ - Ta) >= demand) q_h_const = demand;
-    else g_h = hp.conductance_W_K;
+  if (s.Ta < hp.balance_temperature_K && heater_valve_open_) {
+    const double demand = hp.cabin_UA_W_K * (hp.balance_temperature_K - s.Ta);
+    if (hp.conductance_W_K * (T_c_ - s.Ta) >= demand) s.q_h_const = demand;
+    else s.g_h = hp.conductance_W_K;
   }
+}
 
-  // Backward Euler on θ = T - T_a.
+// Backward Euler on θ = T - T_a; the heat flows of the implicit update and the new temperatures.
+void CoolingModel::solveTemperatures(const CoolingInputs& in, SubstepState& s) {
+  const auto& ht = p_.ht;
+  const double h = s.h, Ta = s.Ta;
   const double G_mc = ht.metal_to_coolant_UA_W_K, G_s = ht.surface_loss_UA_W_K;
   Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
   Eigen::Vector3d b;
   A(0, 0) = C_m_ / h + G_mc + G_s;
   A(0, 1) = -G_mc;
   A(1, 0) = -G_mc;
-  A(1, 1) = C_c_ / h + G_mc + G_ht + g_h;
-  A(1, 2) = -G_ht * pre;
-  A(2, 2) = C_l_ / h + G_lt;
+  A(1, 1) = C_c_ / h + G_mc + s.G_ht + s.g_h;
+  A(1, 2) = -s.G_ht * s.pre;
+  A(2, 2) = C_l_ / h + s.G_lt;
   b(0) = C_m_ / h * (T_m_ - Ta) + in.engine_heat_W;
-  b(1) = C_c_ / h * (T_c_ - Ta) - q_h_const;
+  b(1) = C_c_ / h * (T_c_ - Ta) - s.q_h_const;
   b(2) = C_l_ / h * (T_l_ - Ta) + in.lt_heat_W;
-  const Eigen::Vector3d th = A.partialPivLu().solve(b);
+  s.th = A.partialPivLu().solve(b);
 
-  const double Q_lt = G_lt * th(2);
-  const double Q_ht = G_ht * (th(1) - pre * th(2));
-  const double Q_h = q_h_const + g_h * th(1);
-  const double Q_s = G_s * th(0);
-  const double T_c_old = T_c_;
-  T_m_ = Ta + th(0);
-  T_c_ = Ta + th(1);
-  T_l_ = Ta + th(2);
+  s.Q_lt = s.G_lt * s.th(2);
+  s.Q_ht = s.G_ht * (s.th(1) - s.pre * s.th(2));
+  s.Q_h = s.q_h_const + s.g_h * s.th(1);
+  s.Q_s = G_s * s.th(0);
+  T_m_ = Ta + s.th(0);
+  T_c_ = Ta + s.th(1);
+  T_l_ = Ta + s.th(2);
   const auto& nm = p_.numerics;
   auto chk = [&](double T, const char* what) {
     if (!std::isfinite(T) || T < nm.min_temperature_K || T > nm.max_temperature_K)
@@ -199,8 +223,13 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
   chk(T_m_, "engine metal temperature");
   chk(T_c_, "HT coolant temperature");
   chk(T_l_, "LT coolant temperature");
+}
 
-  // Lags with the new coolant temperatures (exact exponential update).
+// Lags with the new coolant temperatures (exact exponential update): thermostat wax and its
+// play, fan clutch, LT pump speed.
+void CoolingModel::updateLags(const CoolingInputs& in, const SubstepState& s) {
+  const double h = s.h;
+  const auto& f = p_.fan;
   const auto& tp = p_.thermostat;
   T_w_ = T_c_ + (T_w_ - T_c_) * lagFactor(h, tp.wax_time_constant_s);
   const double hh = 0.5 * tp.hysteresis_K;
@@ -209,9 +238,13 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
       std::max(clamp01((T_c_ - f.engage_start_K) / (f.engage_full_K - f.engage_start_K)), clamp01(in.fan_demand));
   eng_ = e_target + (eng_ - e_target) * lagFactor(h, f.clutch_time_constant_s);
   const double w_target = ltPumpTarget(T_l_);
-  w_lt_ = w_target + (w_lt_ - w_target) * lagFactor(h, l.pump_time_constant_s);
+  w_lt_ = w_target + (w_lt_ - w_target) * lagFactor(h, p_.lt.pump_time_constant_s);
+}
 
-  // Bookkeeping: exactly the fluxes of the implicit update.
+// Bookkeeping: exactly the fluxes of the implicit update.
+void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s, double T_c_old) {
+  const double h = s.h;
+  const auto& tp = p_.thermostat;
   CoolingOutputs& o = out_;
   if (o.warmup_time_s < 0.0 && T_c_ >= tp.opening_start_K) {
     const double frac = T_c_ > T_c_old ? (tp.opening_start_K - T_c_old) / (T_c_ - T_c_old) : 1.0;
@@ -221,35 +254,35 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
   o.coolant_ht_T_K = T_c_;
   o.metal_T_K = T_m_;
   o.coolant_lt_T_K = T_l_;
-  o.thermostat_opening = y;
+  o.thermostat_opening = s.y;
   o.fan_engagement = eng_;
-  o.fan_speed_rad_s = n_fan;
-  o.fan_power_W = air.power_W;
-  o.fan_drive_power_W = fan_drive_W;
-  o.fan_pressure_rise_Pa = air.dp_Pa;
-  o.pump_power_W = pump_W;
-  o.lt_pump_speed_rad_s = w_lt;
-  o.lt_pump_power_W = lt_in_W;
-  o.lt_pump_hydraulic_power_W = lt_hyd_W;
-  o.radiator_ht_heat_W = Q_ht;
-  o.radiator_lt_heat_W = Q_lt;
-  o.heater_heat_W = Q_h;
-  o.surface_loss_W = Q_s;
-  o.air_volume_flow_m3_s = air.flow_m3_s;
-  o.air_mass_flow_kg_s = m_air;
-  o.coolant_flow_m3_s = q_pump;
-  o.radiator_coolant_flow_m3_s = q_rad;
-  o.ht_air_in_T_K = Ta + pre * th(2);
-  o.fan_energy_J += air.power_W * h;
-  o.fan_drive_energy_J += fan_drive_W * h;
-  o.pump_energy_J += pump_W * h;
-  o.lt_pump_energy_J += lt_in_W * h;
+  o.fan_speed_rad_s = s.n_fan;
+  o.fan_power_W = s.air.power_W;
+  o.fan_drive_power_W = s.fan_drive_W;
+  o.fan_pressure_rise_Pa = s.air.dp_Pa;
+  o.pump_power_W = s.pump_W;
+  o.lt_pump_speed_rad_s = s.w_lt;
+  o.lt_pump_power_W = s.lt_in_W;
+  o.lt_pump_hydraulic_power_W = s.lt_hyd_W;
+  o.radiator_ht_heat_W = s.Q_ht;
+  o.radiator_lt_heat_W = s.Q_lt;
+  o.heater_heat_W = s.Q_h;
+  o.surface_loss_W = s.Q_s;
+  o.air_volume_flow_m3_s = s.air.flow_m3_s;
+  o.air_mass_flow_kg_s = s.m_air;
+  o.coolant_flow_m3_s = s.q_pump;
+  o.radiator_coolant_flow_m3_s = s.q_rad;
+  o.ht_air_in_T_K = s.Ta + s.pre * s.th(2);
+  o.fan_energy_J += s.air.power_W * h;
+  o.fan_drive_energy_J += s.fan_drive_W * h;
+  o.pump_energy_J += s.pump_W * h;
+  o.lt_pump_energy_J += s.lt_in_W * h;
   o.engine_heat_J += in.engine_heat_W * h;
   o.lt_heat_J += in.lt_heat_W * h;
-  o.radiator_ht_J += Q_ht * h;
-  o.radiator_lt_J += Q_lt * h;
-  o.heater_J += Q_h * h;
-  o.surface_loss_J += Q_s * h;
+  o.radiator_ht_J += s.Q_ht * h;
+  o.radiator_lt_J += s.Q_lt * h;
+  o.heater_J += s.Q_h * h;
+  o.surface_loss_J += s.Q_s * h;
   o.stored_change_J = C_m_ * (T_m_ - T_m0_) + C_c_ * (T_c_ - T_c0_) + C_l_ * (T_l_ - T_l0_);
   o.energy_residual_J = o.engine_heat_J + o.lt_heat_J - o.radiator_ht_J - o.radiator_lt_J - o.heater_J -
                         o.surface_loss_J - o.stored_change_J;

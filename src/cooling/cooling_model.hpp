@@ -122,7 +122,30 @@ class CoolingModel {
   double ltPumpTarget(double T_l) const;
 
  private:
+  // One substep: the coefficients frozen at its start, then the implicit update's results.
+  struct SubstepState {
+    double h = 0, Ta = 0, w_p = 0;            // substep [s], ambient [K], HT pump speed [rad/s]
+    double q_pump = 0, pump_W = 0;            // HT pump flow [m^3/s] and shaft power [W]
+    double y = 0, q_rad = 0, m_rad = 0;       // thermostat opening [-], radiator flow [m^3/s], [kg/s]
+    double n_fan = 0;                         // fan speed [rad/s]
+    AirPoint air{0.0, 0.0, 0.0};              // air path at the fan speed
+    double fan_drive_W = 0;                   // fan power at its drive (clutch slip included) [W]
+    double m_air = 0, C_air = 0;              // air mass flow [kg/s], capacity rate [W/K]
+    double w_lt = 0, m_lt = 0;                // LT pump speed [rad/s], LT coolant flow [kg/s]
+    double lt_hyd_W = 0, lt_in_W = 0;         // LT pump hydraulic and drive power [W]
+    double G_lt = 0, G_ht = 0, pre = 0;       // radiator conductances [W/K], LT air preheat [-]
+    double q_h_const = 0, g_h = 0;            // heater: constant demand [W] or conductance [W/K]
+    Eigen::Vector3d th = Eigen::Vector3d::Zero();  // new metal, HT, LT temperatures - ambient [K]
+    double Q_lt = 0, Q_ht = 0, Q_h = 0, Q_s = 0;   // heat flows of the implicit update [W]
+  };
   void substep(double h, const CoolingInputs& in);
+  void htPumpAndThermostat(SubstepState& s) const;
+  void fanAndAirFlow(const CoolingInputs& in, double rho_air, SubstepState& s) const;
+  void ltPump(SubstepState& s) const;
+  void heaterLoad(SubstepState& s);
+  void solveTemperatures(const CoolingInputs& in, SubstepState& s);
+  void updateLags(const CoolingInputs& in, const SubstepState& s);
+  void recordOutputs(const CoolingInputs& in, const SubstepState& s, double T_c_old);
   void checkFinite(const CoolingInputs& in) const;
   CoolingParams p_;
   std::string file_;

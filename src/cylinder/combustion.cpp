@@ -1,6 +1,7 @@
 #include "cylinder/combustion.hpp"
 
 #include "cylinder/thermo.hpp"
+#include "common/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +51,7 @@ double watsonPremixedFraction(double phi, double tau_ms) {
 double Nozzle::massRate(double p_rail, double p_cyl) const {
   const double dp = p_rail - p_cyl;
   if (dp <= 0.0) return 0.0;
-  const double A = holes * 0.25 * M_PI * hole_diameter_m * hole_diameter_m;
+  const double A = holes * 0.25 * units::kPi * hole_diameter_m * hole_diameter_m;
   return discharge_coeff * A * std::sqrt(2.0 * fuel_density_kg_m3 * dp);
 }
 

@@ -95,7 +95,7 @@ double Cylinder::fmep_Pa(double omega) const {
 }
 
 double Cylinder::frictionTorque_Nm(double omega) const {
-  return fmep_Pa(omega) * crank_.displacement() / (4.0 * M_PI);
+  return fmep_Pa(omega) * crank_.displacement() / (4.0 * units::kPi);
 }
 
 void Cylinder::diverged(const char* quantity, double value) const {
@@ -113,223 +113,282 @@ void Cylinder::advance(double dt, double omega, const PortFlows& f) {
 }
 
 void Cylinder::substep(double dt, double omega, const PortFlows& f) {
-  const double dth = omega * dt / units::kRad_per_deg;
-  const double th0 = theta_deg_, th1 = th0 + dth;
-  const bool flowing = f.intake.mdot_kg_s != 0.0 || f.exhaust.mdot_kg_s != 0.0;
-  if (flowing && two_zone_) mergeZones();
-  const double travel0 = travel_, travel1 = crank_.travel(units::degToRad(th1));
-  const double V0 = V_, V1 = crank_.clearanceVolume() + crank_.pistonArea() * travel1, p0 = p_;
-  double Vu0 = two_zone_ ? Vu_ : V0, Vb0 = two_zone_ ? Vb_ : 0.0;  // zone volumes at the step start [m³]
-  const double mR0 = mR_;
-  double Uu = Pu_.u(Tu_);
-  double Ub = two_zone_ ? Pb_.u(Tb_) : 0.0;
-  const double hu0 = Pu_.h(Tu_) / m_;  // single zone whenever valves flow (merged above)
+  SubstepState s = beginSubstep(dt, omega, f);
+  exchangeValveFlows(f, s);
+  if (closed_ && combustion_on_) {
+    injectFuel(s);
+    advanceIgnitionDelay(s);
+  }
+  if (combustion_on_) burnFuel(s);
+  qwall_W_ = 0.0;
+  if (heat_transfer_on_) transferWallHeat(s);
+  clampUnburnedMasses();
+  solveZoneEnergies(s);
+  accumulateCycleResults(s);
+  if (P_.nox_enabled && two_zone_) accumulateNox(s);
+  advanceCrankAngle(s);
+}
 
-  // 1. valve flows (single zone): inflow with its burned fraction, outflow of the mixture.
+Cylinder::SubstepState Cylinder::beginSubstep(double dt, double omega, const PortFlows& f) {
+  SubstepState s;
+  s.dt = dt;
+  s.omega = omega;
+  s.dth = omega * dt / units::kRad_per_deg;
+  s.th0 = theta_deg_;
+  s.th1 = s.th0 + s.dth;
+  s.flowing = f.intake.mdot_kg_s != 0.0 || f.exhaust.mdot_kg_s != 0.0;
+  if (s.flowing && two_zone_) mergeZones();
+  s.travel0 = travel_;
+  s.travel1 = crank_.travel(units::degToRad(s.th1));
+  s.V0 = V_;
+  s.V1 = crank_.clearanceVolume() + crank_.pistonArea() * s.travel1;
+  s.p0 = p_;
+  s.Vu0 = two_zone_ ? Vu_ : s.V0;
+  s.Vb0 = two_zone_ ? Vb_ : 0.0;
+  s.mR0 = mR_;
+  s.Uu = Pu_.u(Tu_);
+  s.Ub = two_zone_ ? Pb_.u(Tb_) : 0.0;
+  s.hu0 = Pu_.h(Tu_) / m_;  // single zone whenever valves flow (merged above)
+  return s;
+}
+
+// 1. valve flows (single zone): inflow with its burned fraction, outflow of the mixture.
+void Cylinder::exchangeValveFlows(const PortFlows& f, SubstepState& s) {
   const PortFlow* ports[2] = {&f.intake, &f.exhaust};
   for (int i = 0; i < 2; ++i) {
     const PortFlow& pf = *ports[i];
-    const double dm = pf.mdot_kg_s * dt, dH = pf.Hdot_W * dt;
+    const double dm = pf.mdot_kg_s * s.dt, dH = pf.Hdot_W * s.dt;
     if (dm > 0.0) {
       mu_[kAir] += dm * (1.0 - pf.burned_frac);
       mu_[kBurned] += dm * pf.burned_frac;
     } else if (dm < 0.0) {
       double m = 0.0;
       for (double x : mu_) m += x;
-      const double h = hu0;
+      const double h = s.hu0;
       if (std::fabs(pf.Hdot_W / pf.mdot_kg_s - h) > 0.1 * std::fabs(h) + 2e4)
         diverged("outflow enthalpy (use specificEnthalpy_J_kg)", pf.Hdot_W / pf.mdot_kg_s);
       if (-dm >= m) diverged("mass (outflow exceeds content)", m + dm);
       for (double& x : mu_) x *= 1.0 + dm / m;
     }
-    Uu += dH;
+    s.Uu += dH;
     if (i == 0) acc_.intake_mass_kg += dm;
     if (i == 1) {
       acc_.exhaust_mass_kg -= dm;
       acc_.exhaust_enthalpy_J -= dH;
     }
   }
+}
 
-  // 2. injection (liquid fuel evaporates into the unburned zone).
-  if (closed_ && combustion_on_) {
-    const double rate = P_.nozzle.massRate(sched_.rail_pressure_Pa, p0);
-    double dm_inj = 0.0;
-    for (auto& k : pulses_) {
-      if (k.mass <= 0.0 || k.injected >= k.mass || th1 <= k.soi) continue;
-      const double frac = (th1 - std::max(th0, k.soi)) / dth;
-      const double d = std::min(k.mass - k.injected, rate * dt * frac);
-      k.injected += d;
-      dm_inj += d;
-    }
-    if (dm_inj > 0.0) {
-      mu_[kFuelVap] += dm_inj;
-      Uu += dm_inj * (thermo_.group(kFuelVap).h(P_.fuel_temperature_K) - P_.fuel.hfg_J_kg);
-      acc_.fuel_injected_kg += dm_inj;
-    }
-    // 3. ignition: Livengood–Wu integral of the Hardenberg–Hase delay.
-    const double cm = crank_.meanPistonSpeed(omega);
-    for (auto& k : pulses_) {
-      if (k.ignited || k.injected <= 0.0) continue;
-      const double tau_s = P_.ignition_delay_multiplier *
-                           hardenbergHaseDelayDeg(p0, Tu_, cm, P_.cetane_number) * units::kRad_per_deg / omega;
-      const double portion = (th1 - std::max(th0, k.soi)) / dth;
-      const double lw1 = k.lw + dt * portion / tau_s;
-      if (lw1 >= 1.0) {
-        const double back = dth * portion * (lw1 - 1.0) / (lw1 - k.lw);
-        ignite(k, th1 - back, omega);
-      }
-      k.lw = lw1;
-    }
+// 2. injection (liquid fuel evaporates into the unburned zone).
+void Cylinder::injectFuel(SubstepState& s) {
+  const double rate = P_.nozzle.massRate(sched_.rail_pressure_Pa, s.p0);
+  double dm_inj = 0.0;
+  for (auto& k : pulses_) {
+    if (k.mass <= 0.0 || k.injected >= k.mass || s.th1 <= k.soi) continue;
+    const double frac = (s.th1 - std::max(s.th0, k.soi)) / s.dth;
+    const double d = std::min(k.mass - k.injected, rate * s.dt * frac);
+    k.injected += d;
+    dm_inj += d;
   }
-
-  // 4. combustion: double-Wiebe demand of every ignited pulse, limited by vapour and air.
-  double dm_fb = 0.0;
-  if (combustion_on_) {
-    double demand = deferred_kg_;
-    for (auto& k : pulses_) {
-      if (!k.ignited || k.done) continue;
-      if (th0 >= k.wiebe.end_deg()) k.done = true;  // x = 1 reached in an earlier step
-      const double x1 = k.wiebe.x(th1);
-      demand += k.mass * (x1 - k.x_prev);
-      k.x_prev = x1;
-    }
-    const double afr = thermo_.afrStoich();
-    dm_fb = std::max(0.0, std::min({demand, mu_[kFuelVap], mu_[kAir] / afr}));
-    deferred_kg_ = demand - dm_fb;
-    if (dm_fb > 0.0) {
-      // Air taken into the burned zone: λ_flame·AFR per kg, but never more than the unburned
-      // zone can spare for all the fuel of this cycle still to burn — vapour, deferred demand
-      // and fuel not yet injected (rich limit: stoichiometric). Counting only the present
-      // vapour let the early flame take the air of the late-injected fuel, which then waited
-      // (air-limited) until the zones merged at EVO and burned there in one step.
-      const double to_burn =
-          std::max(mu_[kFuelVap] + deferred_kg_, fuel_cycle_kg_ - acc_.fuel_burned_kg);
-      const double spare = mu_[kAir] / std::max(to_burn, dm_fb);
-      const double dm_air = dm_fb * std::max(afr, std::min(afr * P_.flame_lambda, spare));
-      const double q = (P_.fuel.lhv_J_kg + P_.fuel.hfg_J_kg) * dm_fb;
-      if (closed_ && !flowing && !zones_merged_) {
-        if (!two_zone_) {
-          two_zone_ = true;
-          Tb_ = Tu_ + 2000.0;
-        }
-        const double Hreac = dm_fb * thermo_.group(kFuelVap).h(Tu_) +
-                             dm_air * thermo_.group(kAir).h(Tu_);
-        Uu -= Hreac;
-        Ub += Hreac + q;
-        mu_[kFuelVap] -= dm_fb;
-        mu_[kAir] -= dm_air;
-        mb_[kBurned] += (1.0 + afr) * dm_fb;
-        mb_[kAir] += dm_air - afr * dm_fb;
-      } else {
-        Uu += q;
-        mu_[kFuelVap] -= dm_fb;
-        mu_[kAir] -= afr * dm_fb;
-        mu_[kBurned] += (1.0 + afr) * dm_fb;
-      }
-      acc_.fuel_burned_kg += dm_fb;
-      acc_.heat_release_J += P_.fuel.lhv_J_kg * dm_fb;
-      while (ca_next_ < 3 && fuel_cycle_kg_ > 0.0) {
-        const double target = (ca_next_ == 0 ? 0.1 : ca_next_ == 1 ? 0.5 : 0.9) * fuel_cycle_kg_;
-        if (acc_.fuel_burned_kg < target) break;
-        const double before = acc_.fuel_burned_kg - dm_fb;
-        ca_marks_[ca_next_++] = th0 + dth * (target - before) / dm_fb;
-      }
-    }
+  if (dm_inj > 0.0) {
+    mu_[kFuelVap] += dm_inj;
+    s.Uu += dm_inj * (thermo_.group(kFuelVap).h(P_.fuel_temperature_K) - P_.fuel.hfg_J_kg);
+    acc_.fuel_injected_kg += dm_inj;
   }
+}
 
-  // 5. wall heat transfer (Woschni, explicit).
-  qwall_W_ = 0.0;
-  if (heat_transfer_on_) {
-    const double Tm = p0 * V0 / mR0;
-    const double cm = crank_.meanPistonSpeed(omega);
-    const Geometry& G = crank_.geometry();
-    double h;
-    if (P_.woschni.hohenberg) {
-      // hohenbergCoefficient() with C_H and the multiplier folded in: V^−0.06 p[bar]^0.8 T^−0.4 (c_m+1.4)^0.8
-      h = hohenberg_pre_ * std::exp(-0.06 * std::log(V0) + 0.8 * std::log(p0 * 1e-5) -
-                                    0.4 * std::log(Tm) + 0.8 * std::log(cm + 1.4));
-    } else {
-      const bool comb = closed_ && combustion_started_;
-      const double pmot = comb ? pr_ * std::exp(nr_ * std::log(Vr_ / V0)) : p0;
-      const double w = P_.woschni.velocity(!closed_, comb, cm, G.bore_m, G.stroke_m,
-                                           crank_.displacement(), Tr_, pr_, Vr_, p0, pmot);
-      // woschniCoefficient() with the bore factor precomputed: C0 B^−0.2 (p[kPa] w)^0.8 T^−0.55
-      h = woschni_pre_ * std::exp(0.8 * std::log(p0 * 1e-3 * std::max(w, 1e-6)) -
-                                  0.55 * std::log(Tm));
+// 3. ignition: Livengood–Wu integral of the Hardenberg–Hase delay.
+void Cylinder::advanceIgnitionDelay(const SubstepState& s) {
+  const double cm = crank_.meanPistonSpeed(s.omega);
+  for (auto& k : pulses_) {
+    if (k.ignited || k.injected <= 0.0) continue;
+    const double tau_s = P_.ignition_delay_multiplier *
+                         hardenbergHaseDelayDeg(s.p0, Tu_, cm, P_.cetane_number) * units::kRad_per_deg / s.omega;
+    const double portion = (s.th1 - std::max(s.th0, k.soi)) / s.dth;
+    const double lw1 = k.lw + s.dt * portion / tau_s;
+    if (lw1 >= 1.0) {
+      const double back = s.dth * portion * (lw1 - 1.0) / (lw1 - k.lw);
+      ignite(k, s.th1 - back, s.omega);
     }
-    const double Ah = crank_.headArea(), Ap = crank_.pistonCrownArea(),
-                 Al = M_PI * G.bore_m * (travel0 + G.top_land_height_m);
-    const double A = Ah + Ap + Al, AT = Ah * Thead_ + Ap * Tpiston_ + Al * Tliner_;
-    const double fu = Vu0 / V0, fb = Vb0 / V0;
-    const double Qu = h * fu * (A * Tu_ - AT), Qb = two_zone_ ? h * fb * (A * Tb_ - AT) : 0.0;
-    qwall_W_ = Qu + Qb;
-    Uu -= Qu * dt;
-    Ub -= Qb * dt;
-    acc_.heat_wall_J += qwall_W_ * dt;
+    k.lw = lw1;
   }
+}
 
+// 4. combustion: double-Wiebe demand of every ignited pulse, limited by vapour and air.
+void Cylinder::burnFuel(SubstepState& s) {
+  double demand = deferred_kg_;
+  for (auto& k : pulses_) {
+    if (!k.ignited || k.done) continue;
+    if (s.th0 >= k.wiebe.end_deg()) k.done = true;  // x = 1 reached in an earlier step
+    const double x1 = k.wiebe.x(s.th1);
+    demand += k.mass * (x1 - k.x_prev);
+    k.x_prev = x1;
+  }
+  const double afr = thermo_.afrStoich();
+  const double dm_fb = std::max(0.0, std::min({demand, mu_[kFuelVap], mu_[kAir] / afr}));
+  deferred_kg_ = demand - dm_fb;
+  if (dm_fb > 0.0) {
+    releaseCombustionHeat(s, dm_fb, afr);
+    acc_.fuel_burned_kg += dm_fb;
+    acc_.heat_release_J += P_.fuel.lhv_J_kg * dm_fb;
+    markBurnAngles(s, dm_fb);
+  }
+}
+
+// Moves dm_fb [kg] of burned fuel and its air into the burned products, in the burned zone
+// (split off at the first burn) while the charge is closed, else in the single zone.
+void Cylinder::releaseCombustionHeat(SubstepState& s, double dm_fb, double afr) {
+  // Air taken into the burned zone: λ_flame·AFR per kg, but never more than the unburned
+  // zone can spare for all the fuel of this cycle still to burn — vapour, deferred demand
+  // and fuel not yet injected (rich limit: stoichiometric). Counting only the present
+  // vapour let the early flame take the air of the late-injected fuel, which then waited
+  // (air-limited) until the zones merged at EVO and burned there in one step.
+  const double to_burn =
+      std::max(mu_[kFuelVap] + deferred_kg_, fuel_cycle_kg_ - acc_.fuel_burned_kg);
+  const double spare = mu_[kAir] / std::max(to_burn, dm_fb);
+  const double dm_air = dm_fb * std::max(afr, std::min(afr * P_.flame_lambda, spare));
+  const double q = (P_.fuel.lhv_J_kg + P_.fuel.hfg_J_kg) * dm_fb;
+  if (closed_ && !s.flowing && !zones_merged_) {
+    if (!two_zone_) {
+      two_zone_ = true;
+      Tb_ = Tu_ + 2000.0;
+    }
+    const double Hreac = dm_fb * thermo_.group(kFuelVap).h(Tu_) +
+                         dm_air * thermo_.group(kAir).h(Tu_);
+    s.Uu -= Hreac;
+    s.Ub += Hreac + q;
+    mu_[kFuelVap] -= dm_fb;
+    mu_[kAir] -= dm_air;
+    mb_[kBurned] += (1.0 + afr) * dm_fb;
+    mb_[kAir] += dm_air - afr * dm_fb;
+  } else {
+    s.Uu += q;
+    mu_[kFuelVap] -= dm_fb;
+    mu_[kAir] -= afr * dm_fb;
+    mu_[kBurned] += (1.0 + afr) * dm_fb;
+  }
+}
+
+// CA10 / CA50 / CA90: crank angles [deg] at which 10 / 50 / 90 % of the cycle's fuel has
+// burned, interpolated within the sub-step that burned dm_fb [kg].
+void Cylinder::markBurnAngles(const SubstepState& s, double dm_fb) {
+  while (ca_next_ < 3 && fuel_cycle_kg_ > 0.0) {
+    const double target = (ca_next_ == 0 ? 0.1 : ca_next_ == 1 ? 0.5 : 0.9) * fuel_cycle_kg_;
+    if (acc_.fuel_burned_kg < target) break;
+    const double before = acc_.fuel_burned_kg - dm_fb;
+    ca_marks_[ca_next_++] = s.th0 + s.dth * (target - before) / dm_fb;
+  }
+}
+
+// 5. wall heat transfer (Woschni, explicit).
+void Cylinder::transferWallHeat(SubstepState& s) {
+  const double h = wallHeatCoefficient(s);
+  const Geometry& G = crank_.geometry();
+  const double Ah = crank_.headArea(), Ap = crank_.pistonCrownArea(),
+               Al = units::kPi * G.bore_m * (s.travel0 + G.top_land_height_m);
+  const double A = Ah + Ap + Al, AT = Ah * Thead_ + Ap * Tpiston_ + Al * Tliner_;
+  const double fu = s.Vu0 / s.V0, fb = s.Vb0 / s.V0;
+  const double Qu = h * fu * (A * Tu_ - AT), Qb = two_zone_ ? h * fb * (A * Tb_ - AT) : 0.0;
+  qwall_W_ = Qu + Qb;
+  s.Uu -= Qu * s.dt;
+  s.Ub -= Qb * s.dt;
+  acc_.heat_wall_J += qwall_W_ * s.dt;
+}
+
+// Heat-transfer coefficient [W/(m² K)] at the sub-step start: Hohenberg or Woschni.
+double Cylinder::wallHeatCoefficient(const SubstepState& s) const {
+  const double Tm = s.p0 * s.V0 / s.mR0;
+  const double cm = crank_.meanPistonSpeed(s.omega);
+  const Geometry& G = crank_.geometry();
+  if (P_.woschni.hohenberg) {
+    // hohenbergCoefficient() with C_H and the multiplier folded in: V^−0.06 p[bar]^0.8 T^−0.4 (c_m+1.4)^0.8
+    return hohenberg_pre_ * std::exp(-0.06 * std::log(s.V0) + 0.8 * std::log(s.p0 * 1e-5) -
+                                     0.4 * std::log(Tm) + 0.8 * std::log(cm + 1.4));
+  }
+  const bool comb = closed_ && combustion_started_;
+  const double pmot = comb ? pr_ * std::exp(nr_ * std::log(Vr_ / s.V0)) : s.p0;
+  const double w = P_.woschni.velocity(!closed_, comb, cm, G.bore_m, G.stroke_m,
+                                       crank_.displacement(), Tr_, pr_, Vr_, s.p0, pmot);
+  // woschniCoefficient() with the bore factor precomputed: C0 B^−0.2 (p[kPa] w)^0.8 T^−0.55
+  return woschni_pre_ * std::exp(0.8 * std::log(s.p0 * 1e-3 * std::max(w, 1e-6)) -
+                                 0.55 * std::log(Tm));
+}
+
+// Unburned-zone masses below zero by round-off (<= 1e-12 kg) are set to zero; more diverges.
+void Cylinder::clampUnburnedMasses() {
   for (int g = 0; g < kNumGroups; ++g) {
     if (mu_[g] < 0.0) {
       if (mu_[g] < -1e-12) diverged("unburned-zone mass", mu_[g]);
       mu_[g] = 0.0;
     }
   }
-  // 6. implicit energy equations.
+}
+
+// 6. implicit energy equations.
+void Cylinder::solveZoneEnergies(SubstepState& s) {
   refreshPolys();
-  if (two_zone_) {
-    // Unburned zone (nearly) consumed by the flame: below 0.1 % of the charge its explicit
-    // exchanges (entrainment at h, wall heat) can leave it less energy than any temperature
-    // allows and the two-zone Newton degenerates (seen in coupled Urban runs). Its remaining
-    // mass, energy and volume join the burned gas as one zone (energy conserved exactly). Fuel
-    // still burning in this cycle then burns in that one zone, and the NO kinetics freeze (the
-    // late, diluted combustion adds no NO; re-splitting would put the cycle's NO moles into a
-    // near-empty burned zone).
-    double m_u = 0.0, m_b = 0.0;
-    for (int g = 0; g < kNumGroups; ++g) {
-      m_u += mu_[g];
-      m_b += mb_[g];
-    }
-    if (m_u < 1e-3 * (m_u + m_b)) {
-      mergeZones();
-      zones_merged_ = true;  // rest of this cycle: one zone (NO frozen), no re-split
-      Uu += Ub;
-      Ub = 0.0;
-      Vu0 += Vb0;
-      Vb0 = 0.0;
-    }
+  if (two_zone_) mergeConsumedUnburnedZone(s);
+  travel_ = s.travel1;
+  solveTemperatures(s.V0, s.V1, s.Vu0, s.Vb0, s.Uu, s.Ub);
+}
+
+// Unburned zone (nearly) consumed by the flame: below 0.1 % of the charge its explicit
+// exchanges (entrainment at h, wall heat) can leave it less energy than any temperature
+// allows and the two-zone Newton degenerates (seen in coupled Urban runs). Its remaining
+// mass, energy and volume join the burned gas as one zone (energy conserved exactly). Fuel
+// still burning in this cycle then burns in that one zone, and the NO kinetics freeze (the
+// late, diluted combustion adds no NO; re-splitting would put the cycle's NO moles into a
+// near-empty burned zone).
+void Cylinder::mergeConsumedUnburnedZone(SubstepState& s) {
+  double m_u = 0.0, m_b = 0.0;
+  for (int g = 0; g < kNumGroups; ++g) {
+    m_u += mu_[g];
+    m_b += mb_[g];
   }
-  travel_ = travel1;
-  solveTemperatures(V0, V1, Vu0, Vb0, Uu, Ub);
-  const double dW = 0.5 * (p0 + p_) * (V1 - V0);
+  if (m_u < 1e-3 * (m_u + m_b)) {
+    mergeZones();
+    zones_merged_ = true;  // rest of this cycle: one zone (NO frozen), no re-split
+    s.Uu += s.Ub;
+    s.Ub = 0.0;
+    s.Vu0 += s.Vb0;
+    s.Vb0 = 0.0;
+  }
+}
+
+// Work (net over the cycle, gross over -180…180 deg), peak pressure and peak temperatures.
+void Cylinder::accumulateCycleResults(const SubstepState& s) {
+  const double dW = 0.5 * (s.p0 + p_) * (s.V1 - s.V0);
   acc_.work_net_J += dW;
-  const double thm = 0.5 * (th0 + th1);
+  const double thm = 0.5 * (s.th0 + s.th1);
   if (thm >= -180.0 && thm < 180.0) acc_.work_gross_J += dW;
   if (p_ > acc_.pmax_Pa) {
     acc_.pmax_Pa = p_;
-    acc_.theta_pmax_deg = th1;
+    acc_.theta_pmax_deg = s.th1;
   }
   acc_.Tmax_mean_K = std::max(acc_.Tmax_mean_K, temperature_K());
   if (two_zone_) acc_.Tmax_burned_K = std::max(acc_.Tmax_burned_K, Tb_);
+}
 
-  // 7. NO kinetics in the burned zone, batched over nox_interval_deg.
-  if (P_.nox_enabled && two_zone_) {
-    if (Tb_ >= P_.nox_min_temperature_K) {
-      nox_t_ += dt;
-      nox_Tt_ += Tb_ * dt;
-      nox_pt_ += p_ * dt;
-      nox_Vt_ += Vb_ * dt;
-      nox_deg_ += dth;
-      if (nox_deg_ >= P_.nox_interval_deg) noxInterval();
-    } else if (nox_t_ > 0.0) {
-      noxInterval();
-    }
+// 7. NO kinetics in the burned zone, batched over nox_interval_deg.
+void Cylinder::accumulateNox(const SubstepState& s) {
+  if (Tb_ >= P_.nox_min_temperature_K) {
+    nox_t_ += s.dt;
+    nox_Tt_ += Tb_ * s.dt;
+    nox_pt_ += p_ * s.dt;
+    nox_Vt_ += Vb_ * s.dt;
+    nox_deg_ += s.dth;
+    if (nox_deg_ >= P_.nox_interval_deg) noxInterval();
+  } else if (nox_t_ > 0.0) {
+    noxInterval();
   }
+}
 
-  // 8. crank angle and cycle events.
-  theta_deg_ = th1;
-  if (th0 < P_.ivc_deg && th1 >= P_.ivc_deg) onIVC(omega);
-  if (th0 < P_.evo_deg && th1 >= P_.evo_deg) onEVO();
-  if (th1 >= 360.0) onCycleEnd(omega);
+// 8. crank angle and cycle events.
+void Cylinder::advanceCrankAngle(const SubstepState& s) {
+  theta_deg_ = s.th1;
+  if (s.th0 < P_.ivc_deg && s.th1 >= P_.ivc_deg) onIVC(s.omega);
+  if (s.th0 < P_.evo_deg && s.th1 >= P_.evo_deg) onEVO();
+  if (s.th1 >= 360.0) onCycleEnd(s.omega);
 }
 
 namespace {

@@ -140,7 +140,36 @@ class Cylinder {
     bool ignited = false, done = false;
     DoubleWiebe wiebe;
   };
+  // One crank-angle sub-step: its start state (frozen) and the zone energies that its stages
+  // update in turn (sources explicit, then the implicit energy equations).
+  struct SubstepState {
+    double dt = 0, omega = 0;          // [s], [rad/s]
+    double dth = 0, th0 = 0, th1 = 0;  // crank-angle step, start and end [deg]
+    bool flowing = false;              // a valve flow is reported (single zone)
+    double travel0 = 0, travel1 = 0;   // piston travel at start and end [m]
+    double V0 = 0, V1 = 0;             // volume at start and end [m³]
+    double p0 = 0;                     // pressure at start [Pa]
+    double Vu0 = 0, Vb0 = 0;           // zone volumes at the step start [m³]
+    double mR0 = 0;                    // Σ m R at start [J/K]
+    double Uu = 0, Ub = 0;             // zone sensible energies, updated by the stages [J]
+    double hu0 = 0;                    // specific enthalpy of the charge at start [J/kg]
+  };
   void substep(double dt, double omega, const PortFlows& f);
+  SubstepState beginSubstep(double dt, double omega, const PortFlows& f);
+  void exchangeValveFlows(const PortFlows& f, SubstepState& s);
+  void injectFuel(SubstepState& s);
+  void advanceIgnitionDelay(const SubstepState& s);
+  void burnFuel(SubstepState& s);
+  void releaseCombustionHeat(SubstepState& s, double dm_fb, double afr);
+  void markBurnAngles(const SubstepState& s, double dm_fb);
+  void transferWallHeat(SubstepState& s);
+  double wallHeatCoefficient(const SubstepState& s) const;
+  void clampUnburnedMasses();
+  void solveZoneEnergies(SubstepState& s);
+  void mergeConsumedUnburnedZone(SubstepState& s);
+  void accumulateCycleResults(const SubstepState& s);
+  void accumulateNox(const SubstepState& s);
+  void advanceCrankAngle(const SubstepState& s);
   void onIVC(double omega);
   void onEVO();
   void onCycleEnd(double omega);
@@ -166,7 +195,7 @@ class Cylinder {
   double woschni_pre_ = 0;    // multiplier C0 B^−0.2
   double hohenberg_pre_ = 0;  // multiplier C_H
   bool two_zone_ = false, closed_ = false, combustion_started_ = false;
-  bool zones_merged_ = false;  // unburned zone consumed this cycle (see advance(), step 6)
+  bool zones_merged_ = false;  // unburned zone consumed this cycle (mergeConsumedUnburnedZone)
   // IVC reference for Woschni
   double pr_ = 1e5, Vr_ = 1e-3, Tr_ = 300, nr_ = 1.35;
   double fuel_demand_kg_ = 0, T_coolant_K_ = 363.15, load_ = 0;

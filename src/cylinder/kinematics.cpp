@@ -1,6 +1,7 @@
 #include "cylinder/kinematics.hpp"
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 
 namespace hbt::cylinder {
 
@@ -9,7 +10,7 @@ SliderCrank::SliderCrank(const Geometry& g) : g_(g) {
     throw InputError("cylinder geometry", "geometry", "bore, stroke, rod > stroke/2, CR > 1 required");
   r_ = 0.5 * g.stroke_m;
   l_ = g.rod_m;
-  Ap_ = 0.25 * M_PI * g.bore_m * g.bore_m;
+  Ap_ = 0.25 * units::kPi * g.bore_m * g.bore_m;
   Vd_ = Ap_ * g.stroke_m;
   Vc_ = Vd_ / (g.compression_ratio - 1.0);
 }

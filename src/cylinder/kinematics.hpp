@@ -13,6 +13,8 @@
 #pragma once
 #include <cmath>
 
+#include "common/units.hpp"
+
 namespace hbt::cylinder {
 
 struct Geometry {
@@ -46,10 +48,10 @@ class SliderCrank {
   double headArea() const { return g_.head_area_factor * Ap_; }
   double pistonCrownArea() const { return g_.piston_area_factor * Ap_; }
   double linerArea(double theta_rad) const {
-    return M_PI * g_.bore_m * (travel(theta_rad) + g_.top_land_height_m);
+    return units::kPi * g_.bore_m * (travel(theta_rad) + g_.top_land_height_m);
   }
   double meanPistonSpeed(double omega_rad_s) const {
-    return 2.0 * g_.stroke_m * omega_rad_s / (2.0 * M_PI);
+    return 2.0 * g_.stroke_m * omega_rad_s / (2.0 * units::kPi);
   }
 
  private:

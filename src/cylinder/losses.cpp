@@ -1,6 +1,7 @@
 #include "cylinder/losses.hpp"
 
 #include "common/oil_viscosity.hpp"
+#include "common/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +22,7 @@ double hohenbergCoefficient(double V, double p_Pa, double T, double cm, double C
 double WoschniParams::velocity(bool gas_exchange, bool combustion, double cm, double B, double S,
                                double Vd, double Tr, double pr, double Vr, double p,
                                double pmot) const {
-  const double cu_cm = swirl_ratio * M_PI * B / (2.0 * S);
+  const double cu_cm = swirl_ratio * units::kPi * B / (2.0 * S);
   const double C1 = gas_exchange ? 6.18 + 0.417 * cu_cm : 2.28 + 0.308 * cu_cm;
   double w = C1 * cm;
   if (combustion && !gas_exchange) w += C2_m_sK * Vd * Tr / (pr * Vr) * std::max(p - pmot, 0.0);

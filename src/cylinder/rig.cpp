@@ -12,7 +12,7 @@ double ValveProfile::lift(double theta_deg) const {
   double phi = std::fmod(theta_deg - open_deg, 720.0);
   if (phi < 0.0) phi += 720.0;
   if (phi >= duration_deg) return 0.0;
-  const double s = std::sin(M_PI * phi / duration_deg);
+  const double s = std::sin(units::kPi * phi / duration_deg);
   return max_lift_m * s * s;
 }
 
@@ -20,7 +20,7 @@ double ValveProfile::effectiveArea(double theta_deg) const {
   const double L = lift(theta_deg);
   if (L <= 0.0) return 0.0;
   return count * discharge_coeff *
-         std::min(M_PI * diameter_m * L, 0.25 * M_PI * diameter_m * diameter_m);
+         std::min(units::kPi * diameter_m * L, 0.25 * units::kPi * diameter_m * diameter_m);
 }
 
 double orificeMassFlow(double A, double p0, double T0, double R, double g, double p2) {
@@ -86,7 +86,7 @@ PortFlow SingleCylinderRig::valveFlow(const ValveProfile& v, double p_res, doubl
 }
 
 PortFlows SingleCylinderRig::step() {
-  const double omega = rp_.speed_rpm * M_PI / 30.0;
+  const double omega = units::rpmToRadps(rp_.speed_rpm);
   const double dt = units::degToRad(rp_.step_deg) / omega;
   PortFlows f;
   f.intake = valveFlow(rp_.intake, rp_.p_intake_Pa, rp_.T_intake_K, rp_.intake_burned_frac);

@@ -1,25 +1,14 @@
 #include "cylinder/zeldovich.hpp"
 
-#include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <cmath>
 #include <string>
 
-#include "common/errors.hpp"
+#include "common/cvode_solver.hpp"
 
 namespace hbt::cylinder {
-
-struct ZeldovichNO::Impl {
-  SUNContext ctx = nullptr;
-  void* mem = nullptr;
-  N_Vector y = nullptr, atol = nullptr;
-  SUNMatrix A = nullptr;
-  SUNLinearSolver LS = nullptr;
-  bool initialised = false;
-};
 
 struct ZeldovichAccess {
   static int rhs(realtype, N_Vector y, N_Vector yd, void* ud) {
@@ -46,39 +35,14 @@ struct ZeldovichAccess {
   }
 };
 
-ZeldovichNO::ZeldovichNO() : impl_(new Impl) {
-  Impl& m = *impl_;
-  if (SUNContext_Create(nullptr, &m.ctx) != 0)
-    throw ModelDivergence("ZeldovichNO", "CVODE", "SUNContext_Create failed");
-  m.y = N_VNew_Serial(2, m.ctx);
-  m.atol = N_VNew_Serial(2, m.ctx);
-  m.mem = CVodeCreate(CV_BDF, m.ctx);
-  m.A = SUNDenseMatrix(2, 2, m.ctx);
-  m.LS = SUNLinSol_Dense(m.y, m.A, m.ctx);
-  if (!m.y || !m.atol || !m.mem || !m.A || !m.LS)
-    throw ModelDivergence("ZeldovichNO", "CVODE", "allocation of solver memory failed");
-  NV_Ith_S(m.y, 0) = 0.0;
-  NV_Ith_S(m.y, 1) = 0.0;
-  NV_Ith_S(m.atol, 0) = 1e-12;
-  NV_Ith_S(m.atol, 1) = 1e-16;
-  if (CVodeInit(m.mem, &ZeldovichAccess::rhs, 0.0, m.y) != CV_SUCCESS ||
-      CVodeSVtolerances(m.mem, 1e-6, m.atol) != CV_SUCCESS ||
-      CVodeSetLinearSolver(m.mem, m.LS, m.A) != CV_SUCCESS ||
-      CVodeSetJacFn(m.mem, &ZeldovichAccess::jac) != CV_SUCCESS ||
-      CVodeSetUserData(m.mem, this) != CV_SUCCESS ||
-      CVodeSetMaxNumSteps(m.mem, 20000) != CV_SUCCESS)
-    throw ModelDivergence("ZeldovichNO", "CVODE", "solver set-up failed");
-}
+// CVODE: relative tolerance 1e-6 until the first integrate() sets rtol_, absolute tolerances
+// per unit concentration until setConditions() scales them, at most 20000 steps per interval.
+ZeldovichNO::ZeldovichNO()
+    : cvode_(std::make_unique<CvodeSolver>("ZeldovichNO", 2, &ZeldovichAccess::rhs, this, 1e-6,
+                                           std::vector<double>{1e-12, 1e-16}, 20000,
+                                           &ZeldovichAccess::jac)) {}
 
-ZeldovichNO::~ZeldovichNO() {
-  Impl& m = *impl_;
-  if (m.mem) CVodeFree(&m.mem);
-  if (m.LS) SUNLinSolFree(m.LS);
-  if (m.A) SUNMatDestroy(m.A);
-  if (m.y) N_VDestroy(m.y);
-  if (m.atol) N_VDestroy(m.atol);
-  if (m.ctx) SUNContext_Free(&m.ctx);
-}
+ZeldovichNO::~ZeldovichNO() = default;
 
 void ZeldovichNO::setConditions(double T, double p, const double x[kNumSpecies]) {
   ctot_ = p / (kRu * T);
@@ -96,8 +60,8 @@ void ZeldovichNO::setConditions(double T, double p, const double x[kNumSpecies])
   k2r_ = k2f_ / K2;
   k3r_ = k3f_ / K3;
   cNOe_ = c_[kNO];
-  NV_Ith_S(impl_->atol, 0) = 1e-12 * ctot_;
-  NV_Ith_S(impl_->atol, 1) = 1e-18 * ctot_;
+  cvode_->atol()[0] = 1e-12 * ctot_;
+  cvode_->atol()[1] = 1e-18 * ctot_;
 }
 
 void ZeldovichNO::rates(double NO, double N, double& dNO, double& dN) const {
@@ -116,25 +80,17 @@ double ZeldovichNO::quasiSteadyN(double NO) const {
 }
 
 void ZeldovichNO::integrate(double dt, double& c_NO, double& c_N, bool start_N_qss) {
-  Impl& m = *impl_;
   if (start_N_qss) c_N = quasiSteadyN(c_NO);
-  NV_Ith_S(m.y, 0) = c_NO;
-  NV_Ith_S(m.y, 1) = c_N;
-  if (CVodeReInit(m.mem, 0.0, m.y) != CV_SUCCESS ||
-      CVodeSVtolerances(m.mem, rtol_, m.atol) != CV_SUCCESS ||
-      CVodeSetStopTime(m.mem, dt) != CV_SUCCESS)
-    throw ModelDivergence("ZeldovichNO", "CVODE", "re-initialisation failed");
-  CVodeSetInitStep(m.mem, start_N_qss ? dt * init_frac_ : 0.0);
-  realtype t = 0.0;
-  const int flag = CVode(m.mem, dt, m.y, &t, CV_NORMAL);
-  if (flag < 0)
-    throw ModelDivergence("ZeldovichNO", "NO concentration",
-                          "CVODE failed with flag " + std::to_string(flag));
-  long nst = 0;
-  CVodeGetNumSteps(m.mem, &nst);
-  steps_ += nst;
-  c_NO = NV_Ith_S(m.y, 0);
-  c_N = NV_Ith_S(m.y, 1);
+  double* y = cvode_->y();
+  y[0] = c_NO;
+  y[1] = c_N;
+  cvode_->reinit();
+  cvode_->setTolerances(rtol_);
+  cvode_->setStopTime(dt);
+  cvode_->setInitialStep(start_N_qss ? dt * init_frac_ : 0.0);
+  steps_ += cvode_->advance(dt, "NO concentration");
+  c_NO = y[0];
+  c_N = y[1];
 }
 
 }  // namespace hbt::cylinder

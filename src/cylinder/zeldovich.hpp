@@ -21,6 +21,10 @@
 
 #include "cylinder/thermo.hpp"
 
+namespace hbt {
+class CvodeSolver;
+}
+
 namespace hbt::cylinder {
 
 class ZeldovichNO {
@@ -46,8 +50,7 @@ class ZeldovichNO {
   void setRelativeTolerance(double rtol) { rtol_ = rtol; }
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<CvodeSolver> cvode_;  // state: [NO], [N] [mol/m³]
   double c_[kNumSpecies] = {};
   double k1f_ = 0, k1r_ = 0, k2f_ = 0, k2r_ = 0, k3f_ = 0, k3r_ = 0, cNOe_ = 0, ctot_ = 1;
   long steps_ = 0;

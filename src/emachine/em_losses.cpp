@@ -6,7 +6,6 @@
 namespace hbt::emachine {
 
 namespace {
-constexpr double kPi = units::kPi;
 constexpr double kT20_K = 293.15;
 }  // namespace
 
@@ -36,7 +35,7 @@ LossBreakdown LossModel::evaluate(double T, double w, double V, double T_w) cons
   const double P_air = std::abs(T * w);
   if (P_air > 0.0) I = Vph > 0.0 ? std::max(I, P_air / (3.0 * Vph)) : I;
   b.i_A = I;
-  b.frequency_Hz = e_.pole_pairs * w / (2.0 * kPi);
+  b.frequency_Hz = e_.pole_pairs * w / (2.0 * units::kPi);
   b.copper_W = 3.0 * I * I * phaseResistance(T_w, b.frequency_Hz);
   const double f = b.frequency_Hz, B = fe_.peak_flux_density_T * ratio;
   b.iron_W = fe_.build_factor * fe_.stator_iron_mass_kg *
@@ -47,7 +46,7 @@ LossBreakdown LossModel::evaluate(double T, double w, double V, double T_w) cons
   b.windage_W = m_.windage_ref_W * r * r * r;
   const bool active = w > 0.0 || T != 0.0;
   b.inverter_conduction_W = 3.0 * I * I * inv_.conduction_resistance_ohm;
-  const double I_mean = 2.0 * std::sqrt(2.0) / kPi * I;
+  const double I_mean = 2.0 * std::sqrt(2.0) / units::kPi * I;
   b.inverter_switching_W = 3.0 * inv_.switching_frequency_Hz * inv_.switching_energy_ref_J *
                            (std::max(0.0, V) / inv_.switching_ref_voltage_V) *
                            (I_mean / inv_.switching_ref_current_A);

@@ -15,7 +15,7 @@ EmsModel::EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_su
 void EmsModel::reset() {
   state_ = State::Running;
   soc_integral_ = 0.0;
-  on_time_s_ = 1e9;  // the engine has been running "for ever" at t = 0 (it starts running)
+  on_time_s_ = kRunningForever_s;  // the engine starts running
   crank_time_s_ = 0.0;
   d_ = EmsDecision{};
 }

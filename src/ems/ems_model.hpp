@@ -32,6 +32,10 @@
 
 namespace hbt::ems {
 
+// Engine on-time [s] at a reset: the engine is running and has been for longer than any minimum
+// on-time (stop-start may stop it at once).
+constexpr double kRunningForever_s = 1e9;
+
 /// The controller's engine model: steady fuel flow [kg/s] at crank speed [rad/s] and brake
 /// torque [Nm] (0 at or below the motoring torque). Implemented over the VECTO map by the node.
 class FuelModel {
@@ -109,7 +113,7 @@ class EmsModel {
   const FuelModel& fuel_;
   bool stop_start_supported_ = true;
   State state_ = State::Running;
-  double soc_integral_ = 0.0, on_time_s_ = 1e9, crank_time_s_ = 0.0;
+  double soc_integral_ = 0.0, on_time_s_ = kRunningForever_s, crank_time_s_ = 0.0;
   EmsDecision d_;
 };
 

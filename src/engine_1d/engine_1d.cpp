@@ -6,10 +6,11 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
 
 namespace hbt::engine_1d {
 namespace {
-constexpr double kStoppedRadS = 200.0 * M_PI / 30.0;
+constexpr double kStoppedRadS = units::rpmToRadps(200.0);
 
 double threadCpu() {
   timespec ts;
@@ -35,7 +36,7 @@ Engine1D::Engine1D(const Engine1DParams& p, const std::string& root) : P_(p) {
   cylinder::Cylinder probe(P_.cylinder, "probe");
   ctl_ = std::make_unique<EngineControllers>(P_.engine, probe.thermo().afrStoich(),
                                              P_.cylinder.fuel_ref_kg);
-  reset(1200.0 * M_PI / 30.0, 0.0);
+  reset(units::rpmToRadps(1200.0), 0.0);
 }
 
 Engine1D::~Engine1D() = default;
@@ -45,7 +46,7 @@ void Engine1D::reset(double w, double torque, double T_amb, double p_amb, double
   const double tfl = ref_->fullLoadTorque(w), tmot = ref_->motoringTorque(w);
   const double treq = EngineControllers::limitedRequest(torque, tfl, tmot);
   const double load = std::clamp(treq / tfl, 0.0, 1.0);
-  const double rpm = w * 30.0 / M_PI;
+  const double rpm = units::radpsToRpm(w);
   EngineAssembly::Initial in;
   in.p_amb = p_amb;
   in.T_amb = T_amb;
@@ -54,9 +55,9 @@ void Engine1D::reset(double w, double torque, double T_amb, double p_amb, double
   in.T_im = T_amb + 10.0 + 25.0 * load;
   in.p3 = in.p_im * (1.0 + 0.15 * load) + 5000.0;
   in.T3 = 550.0 + 350.0 * load;
-  in.turbo_rad_s = P_.engine.initial_turbo_speed_rpm * M_PI / 30.0 *
+  in.turbo_rad_s = units::rpmToRadps(P_.engine.initial_turbo_speed_rpm) *
                    std::clamp(0.35 + 0.65 * load, 0.2, 1.0) * std::sqrt(std::min(rpm / 1400.0, 1.6));
-  const double cps = P_.engine.cylinders * w / (4.0 * M_PI);  // cylinder-cycles per second
+  const double cps = P_.engine.cylinders * w / (4.0 * units::kPi);  // cylinder-cycles per second
   in.fuel_per_cycle_kg = treq > tmot ? ref_->steadyFuel(w, treq) / cps : 0.0;
   asm_.reset();
   asm_ = std::make_unique<EngineAssembly>(P_, *tc_, maps_, in);

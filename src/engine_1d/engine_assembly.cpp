@@ -245,6 +245,26 @@ double EngineAssembly::cylinderDt() const {
 }
 
 void EngineAssembly::coupledStep(double dt, double omega) {
+  stepNetworks(dt, omega);
+  std::array<double, kNumChannels> x{};
+  StepSums sums;
+  const double dth = omega * dt / kRad_per_deg;
+  const int nsub_closed = std::max(1, static_cast<int>(std::ceil(dth / substep_deg_ - 1e-9)));
+  const int nsub_open = std::max(1, static_cast<int>(std::ceil(dth / substep_open_deg_ - 1e-9)));
+  for (CylinderSlot& s : cyl_) {
+    advanceCylinder(s, dt, omega, nsub_closed, nsub_open, x);
+    accumulateCylinder(s, sums);
+  }
+  stepTurboShaft(dt);
+  accumulateTotals(sums, dt, omega);
+  recordStep(sums, dt, omega, x);
+  t_ += dt;
+  ++steps_;
+}
+
+// Valve boundaries at the cylinders' states (areas led by half a step if configured), the
+// turbocharger speed, then both pipe networks over dt.
+void EngineAssembly::stepNetworks(double dt, double omega) {
   for (CylinderSlot& s : cyl_) {
     const double p = s.cyl->pressure_Pa(), T = s.cyl->temperature_K();
     s.res_in->setReservoirState(p, T);
@@ -261,83 +281,106 @@ void EngineAssembly::coupledStep(double dt, double omega) {
   turb_[1]->setSpeed(wtc);
   intake_.step(dt);  // dt <= both networks' stable steps (advance() checked them)
   exhaust_.step(dt);
+}
 
-  std::array<double, kNumChannels> x{};
-  double work = 0.0, wall = 0.0, fuel = 0.0, nox = 0.0;
-  const double dth = omega * dt / kRad_per_deg;
-  const int nsub_closed = std::max(1, static_cast<int>(std::ceil(dth / substep_deg_ - 1e-9)));
-  const int nsub_open = std::max(1, static_cast<int>(std::ceil(dth / substep_open_deg_ - 1e-9)));
-  const double ivc = P_.cylinder.ivc_deg, evo = P_.cylinder.evo_deg;
-  for (CylinderSlot& s : cyl_) {
-    cylinder::Cylinder& c = *s.cyl;
-    cylinder::PortFlows pf;
-    const gasdyn::EndFlux& fi = s.run_in->endFlux(End::Right);
-    const double mi = -fi.mdot_in;
-    if (mi > 0.0) {
-      const double T0 = -fi.energy_in / (mi * cp_in_), dm = mi * dt;
-      double xb = 0.0;
-      if (s.back_m > 0.0) {
-        const double take = std::min(s.back_m, dm);
-        xb = s.back_xb * take / dm;
-        s.back_m -= take;
-      }
-      pf.intake = {mi, mi * c.enthalpyOf(T0, xb), xb};
-    } else if (mi < 0.0) {
-      const double dm = -mi * dt, xbc = c.burnedFraction();
-      s.back_xb = (s.back_m * s.back_xb + dm * xbc) / (s.back_m + dm);
-      s.back_m += dm;
-      pf.intake = {mi, mi * c.specificEnthalpy_J_kg(), 0.0};
+// Intake valve: mass flow [kg/s] (> 0 into the cylinder) and its PortFlow. Inflow at the
+// runner's stagnation temperature carries the buffered back-flow's burned gas first; back-flow
+// leaves at the cylinder's enthalpy and fills the buffer.
+double EngineAssembly::intakePortFlow(CylinderSlot& s, double dt, cylinder::PortFlow& pf) {
+  const cylinder::Cylinder& c = *s.cyl;
+  const gasdyn::EndFlux& fi = s.run_in->endFlux(End::Right);
+  const double mi = -fi.mdot_in;
+  if (mi > 0.0) {
+    const double T0 = -fi.energy_in / (mi * cp_in_), dm = mi * dt;
+    double xb = 0.0;
+    if (s.back_m > 0.0) {
+      const double take = std::min(s.back_m, dm);
+      xb = s.back_xb * take / dm;
+      s.back_m -= take;
     }
-    const gasdyn::EndFlux& fe = s.run_ex->endFlux(End::Left);
-    const double me = -fe.mdot_in;
-    const int bank = s.bank;
-    if (me > 0.0) {
-      const double T0 = -fe.energy_in / (me * cp_ex_), xb = xb_bank_[bank];
-      pf.exhaust = {me, me * c.enthalpyOf(T0, xb), xb};
-    } else if (me < 0.0) {
-      const double xbc = c.burnedFraction();
-      pf.exhaust = {me, me * c.specificEnthalpy_J_kg(), 0.0};
-      x[kCylOut] -= me;
-      x[kBurnedOut] -= me * xbc;
-      x[kBankOut0 + bank] -= me;
-      x[kBankBurned0 + bank] -= me * xbc;
-    }
-    // cylinder sub-steps of <= cylinder_substep_deg with the port mass flows of this coupled
-    // step; outflows leave at the cylinder's current specific enthalpy of each sub-step
-    const double th = c.crankAngle_deg();
-    const int nsub = th >= ivc && th < evo ? nsub_closed : nsub_open;
-    const double dts = dt / nsub;
-    for (int j = 0; j < nsub; ++j) {
-      if (j > 0 && mi < 0.0) pf.intake.Hdot_W = mi * c.specificEnthalpy_J_kg();
-      if (j > 0 && me < 0.0) pf.exhaust.Hdot_W = me * c.specificEnthalpy_J_kg();
-      totals_.intake_enthalpy_J += pf.intake.Hdot_W * dts;
-      totals_.exhaust_enthalpy_J -= pf.exhaust.Hdot_W * dts;
-      c.advance(dts, omega, pf);
-    }
-
-    const int cycles = c.cyclesCompleted();
-    double dW, dQ;
-    if (cycles != s.prev_cycles) {
-      const cylinder::CycleResults& r = c.lastCycle();
-      dW = r.work_net_J - s.prev_work + c.workThisCycle_J();
-      dQ = r.heat_wall_J - s.prev_wall + c.wallHeatThisCycle_J();
-      nox += r.nox_no2eq_kg;
-      s.prev_cycles = cycles;
-    } else {
-      dW = c.workThisCycle_J() - s.prev_work;
-      dQ = c.wallHeatThisCycle_J() - s.prev_wall;
-    }
-    s.prev_work = c.workThisCycle_J();
-    s.prev_wall = c.wallHeatThisCycle_J();
-    double inj = 0.0;
-    for (int i = 0; i < 3; ++i) inj += c.pulseInjected_kg(i);  // the cylinder's injection pulses
-    if (inj < s.prev_inj) s.prev_inj = 0.0;
-    fuel += inj - s.prev_inj;
-    s.prev_inj = inj;
-    work += dW;
-    wall += dQ;
+    pf = {mi, mi * c.enthalpyOf(T0, xb), xb};
+  } else if (mi < 0.0) {
+    const double dm = -mi * dt, xbc = c.burnedFraction();
+    s.back_xb = (s.back_m * s.back_xb + dm * xbc) / (s.back_m + dm);
+    s.back_m += dm;
+    pf = {mi, mi * c.specificEnthalpy_J_kg(), 0.0};
   }
-  // turbocharger shaft
+  return mi;
+}
+
+// Exhaust valve: mass flow [kg/s] (> 0 into the cylinder) and its PortFlow. Back-flow carries
+// its bank's burned fraction; outflow is counted in the step's channels x.
+double EngineAssembly::exhaustPortFlow(const CylinderSlot& s, cylinder::PortFlow& pf,
+                                       std::array<double, kNumChannels>& x) const {
+  const cylinder::Cylinder& c = *s.cyl;
+  const gasdyn::EndFlux& fe = s.run_ex->endFlux(End::Left);
+  const double me = -fe.mdot_in;
+  const int bank = s.bank;
+  if (me > 0.0) {
+    const double T0 = -fe.energy_in / (me * cp_ex_), xb = xb_bank_[bank];
+    pf = {me, me * c.enthalpyOf(T0, xb), xb};
+  } else if (me < 0.0) {
+    const double xbc = c.burnedFraction();
+    pf = {me, me * c.specificEnthalpy_J_kg(), 0.0};
+    x[kCylOut] -= me;
+    x[kBurnedOut] -= me * xbc;
+    x[kBankOut0 + bank] -= me;
+    x[kBankBurned0 + bank] -= me * xbc;
+  }
+  return me;
+}
+
+// One cylinder over the coupled step: its port flows, then sub-steps of <= cylinder_substep_deg
+// with the port mass flows of this coupled step; outflows leave at the cylinder's current
+// specific enthalpy of each sub-step.
+void EngineAssembly::advanceCylinder(CylinderSlot& s, double dt, double omega, int nsub_closed,
+                                     int nsub_open, std::array<double, kNumChannels>& x) {
+  cylinder::Cylinder& c = *s.cyl;
+  cylinder::PortFlows pf;
+  const double mi = intakePortFlow(s, dt, pf.intake);
+  const double me = exhaustPortFlow(s, pf.exhaust, x);
+  const double ivc = P_.cylinder.ivc_deg, evo = P_.cylinder.evo_deg;
+  const double th = c.crankAngle_deg();
+  const int nsub = th >= ivc && th < evo ? nsub_closed : nsub_open;
+  const double dts = dt / nsub;
+  for (int j = 0; j < nsub; ++j) {
+    if (j > 0 && mi < 0.0) pf.intake.Hdot_W = mi * c.specificEnthalpy_J_kg();
+    if (j > 0 && me < 0.0) pf.exhaust.Hdot_W = me * c.specificEnthalpy_J_kg();
+    totals_.intake_enthalpy_J += pf.intake.Hdot_W * dts;
+    totals_.exhaust_enthalpy_J -= pf.exhaust.Hdot_W * dts;
+    c.advance(dts, omega, pf);
+  }
+}
+
+// The cylinder's indicated work, wall heat, NOx (at each cycle end) and fuel injected over the
+// step, added to the step's sums.
+void EngineAssembly::accumulateCylinder(CylinderSlot& s, StepSums& sums) {
+  const cylinder::Cylinder& c = *s.cyl;
+  const int cycles = c.cyclesCompleted();
+  double dW, dQ;
+  if (cycles != s.prev_cycles) {
+    const cylinder::CycleResults& r = c.lastCycle();
+    dW = r.work_net_J - s.prev_work + c.workThisCycle_J();
+    dQ = r.heat_wall_J - s.prev_wall + c.wallHeatThisCycle_J();
+    sums.nox_kg += r.nox_no2eq_kg;
+    s.prev_cycles = cycles;
+  } else {
+    dW = c.workThisCycle_J() - s.prev_work;
+    dQ = c.wallHeatThisCycle_J() - s.prev_wall;
+  }
+  s.prev_work = c.workThisCycle_J();
+  s.prev_wall = c.wallHeatThisCycle_J();
+  double inj = 0.0;
+  for (int i = 0; i < 3; ++i) inj += c.pulseInjected_kg(i);  // the cylinder's injection pulses
+  if (inj < s.prev_inj) s.prev_inj = 0.0;
+  sums.fuel_kg += inj - s.prev_inj;
+  s.prev_inj = inj;
+  sums.work_J += dW;
+  sums.wall_J += dQ;
+}
+
+// Turbocharger shaft over dt with the turbines' and the compressor's power.
+void EngineAssembly::stepTurboShaft(double dt) {
   const double Pt = turb_[0]->power() + turb_[1]->power(), Pc = comp_->power();
   requireFinite(Pt, "turbine", "power");
   requireFinite(Pc, "compressor", "power");
@@ -345,16 +388,22 @@ void EngineAssembly::coupledStep(double dt, double omega) {
   if (!std::isfinite(shaft_.omega()) || shaft_.omega() > 5e4)
     throw ModelDivergence("turbocharger shaft", "speed",
                           "omega = " + std::to_string(shaft_.omega()) + " rad/s");
+}
 
+void EngineAssembly::accumulateTotals(const StepSums& sums, double dt, double omega) {
   const double lhv = P_.cylinder.fuel.lhv_J_kg;
-  totals_.fuel_kg += fuel;
-  totals_.fuel_energy_J += fuel * lhv;
-  totals_.indicated_work_J += work;
+  totals_.fuel_kg += sums.fuel_kg;
+  totals_.fuel_energy_J += sums.fuel_kg * lhv;
+  totals_.indicated_work_J += sums.work_J;
   totals_.friction_work_J += fric_torque_ * omega * dt;
-  totals_.wall_heat_J += wall;
-  totals_.nox_kg += nox;
+  totals_.wall_heat_J += sums.wall_J;
+  totals_.nox_kg += sums.nox_kg;
+}
 
-  x[kIndTorque] = work / (omega * dt);
+// The step's channels into the cycle window.
+void EngineAssembly::recordStep(const StepSums& sums, double dt, double omega,
+                                std::array<double, kNumChannels>& x) {
+  x[kIndTorque] = sums.work_J / (omega * dt);
   x[kFricTorque] = fric_torque_;
   x[kAir] = comp_->massFlow();
   x[kExhOut] = -back_end_->massFlowIn();
@@ -366,12 +415,10 @@ void EngineAssembly::coupledStep(double dt, double omega) {
   x[kT3] = 0.5 * (turb_pipe_[0]->T(n0) + turb_pipe_[1]->T(n1));
   // fuel injected, wall heat and NOx of this step as rates over the step (the window splits a
   // step over its bins by crank angle; impulses at the step end would phase-lock with the bins)
-  x[kFuel] = fuel / dt;
-  x[kWallHeat] = wall / dt;
-  x[kNox] = nox / dt;
+  x[kFuel] = sums.fuel_kg / dt;
+  x[kWallHeat] = sums.wall_J / dt;
+  x[kNox] = sums.nox_kg / dt;
   window_.add(dt, omega * dt / kRad_per_deg, x);
-  t_ += dt;
-  ++steps_;
 }
 
 }  // namespace hbt::engine_1d

@@ -133,7 +133,6 @@ class EngineAssembly {
 
  private:
   void build(const Initial& init);
-  void coupledStep(double dt, double omega);
   double cylinderDt() const;  // explicit cylinder/valve coupling limit [s] (inf: off)
   gasdyn::Pipe& pipe(gasdyn::Network& n, const std::string& name, const PipeSpec& s,
                      double friction, bool hot);
@@ -150,6 +149,22 @@ class EngineAssembly {
     double prev_work = 0.0, prev_wall = 0.0, prev_inj = 0.0;  // at the last step [J], [J], [kg]
     int prev_cycles = 0;
   };
+  /// Sums over the cylinders of one coupled step.
+  struct StepSums {
+    double work_J = 0.0, wall_J = 0.0;     // indicated work, wall heat [J]
+    double fuel_kg = 0.0, nox_kg = 0.0;    // fuel injected, NOx (as NO2) of cycles ended [kg]
+  };
+  void coupledStep(double dt, double omega);
+  void stepNetworks(double dt, double omega);
+  double intakePortFlow(CylinderSlot& s, double dt, cylinder::PortFlow& pf);
+  double exhaustPortFlow(const CylinderSlot& s, cylinder::PortFlow& pf,
+                         std::array<double, kNumChannels>& x) const;
+  void advanceCylinder(CylinderSlot& s, double dt, double omega, int nsub_closed, int nsub_open,
+                       std::array<double, kNumChannels>& x);
+  void accumulateCylinder(CylinderSlot& s, StepSums& sums);
+  void stepTurboShaft(double dt);
+  void accumulateTotals(const StepSums& sums, double dt, double omega);
+  void recordStep(const StepSums& sums, double dt, double omega, std::array<double, kNumChannels>& x);
 
   Engine1DParams P_;
   const turbo::Turbocharger& tc_;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/table1d.hpp"
+#include "common/units.hpp"
 #include "engine_1d/fast_faces.hpp"
 #include "gasdyn/boundaries.hpp"
 #include "gasdyn/characteristics.hpp"
@@ -22,7 +23,7 @@ CrankValveArea::CrankValveArea(const cylinder::Cylinder& c, const ValveSpec& v, 
   tab_.resize(2 * static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     const double L = lift(open_ + i * kStep);
-    const double curtain = v.count * M_PI * v.diameter_m * L;
+    const double curtain = v.count * units::kPi * v.diameter_m * L;
     const double an = curtain * cd_n(L / v.diameter_m), ab = curtain * cd_b(L / v.diameter_m);
     tab_[2 * i] = normal_is_forward ? an : ab;
     tab_[2 * i + 1] = normal_is_forward ? ab : an;
@@ -32,7 +33,7 @@ CrankValveArea::CrankValveArea(const cylinder::Cylinder& c, const ValveSpec& v, 
 double CrankValveArea::lift(double th) const {
   const double phi = std::fmod(th - open_ + 1440.0, 720.0);
   if (phi >= duration_) return 0.0;
-  const double s = std::sin(M_PI * phi / duration_);
+  const double s = std::sin(units::kPi * phi / duration_);
   return v_.max_lift_m * std::pow(s > 0.0 ? s : 0.0, v_.shape_exponent);
 }
 

@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <vector>
 
+#include "common/units.hpp"
+
 namespace hbt::engine_1d {
 namespace {
-constexpr double kRpm = M_PI / 30.0;
-
 double cpuNow() {
   timespec ts;
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
@@ -22,7 +22,7 @@ struct Sample { double torque, fuel, boost, turbo; };
 
 SteadyPointResult runSteadyPoint(Engine1D& eng, double rpm, double treq,
                                  const SteadyPointOptions& opt) {
-  const double w = rpm * kRpm, dt = opt.dt_s;
+  const double w = units::rpmToRadps(rpm), dt = opt.dt_s;
   Engine1DInputs in;
   in.speed_rad_s = w;
   in.torque_request_Nm = treq;

@@ -7,6 +7,9 @@
 
 namespace hbt::engine_1d {
 namespace {
+// Compressor efficiency [-] returned where no temperature rise is represented (choke side,
+// windmilling, no work in the map): dT = T0 (pr^k - 1) / eta ~ 0.
+constexpr double kNoTemperatureRiseEfficiency = 1e3;
 constexpr int kPsiPoints = 2001;
 }
 
@@ -35,10 +38,10 @@ double CompressorFlowMap::massFlow(double p0, double T0, double p_down, double w
 
 double CompressorFlowMap::efficiency(double p0, double T0, double p_down, double w) const {
   const double pr = p_down / p0;
-  if (pr <= 1.0) return 1e3;  // choke side / windmilling: no temperature rise represented
+  if (pr <= 1.0) return kNoTemperatureRiseEfficiency;  // choke side / windmilling: no temperature rise represented
   const double n = units::radpsToRpm(w > 0.0 ? w : 0.0) / std::sqrt(T0 / T_ref_);
   const double work = work_(n, pr), hs = std::pow(pr, k_) - 1.0;
-  if (!(work > 1e-9)) return 1e3;
+  if (!(work > 1e-9)) return kNoTemperatureRiseEfficiency;
   return hs / work;
 }
 

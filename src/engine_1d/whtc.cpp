@@ -5,6 +5,7 @@
 
 #include "common/csv_table.hpp"
 #include "common/errors.hpp"
+#include "common/units.hpp"
 
 namespace hbt::engine_1d {
 
@@ -15,7 +16,7 @@ GtrReferenceSpeeds gtrReferenceSpeeds(const std::function<double(double)>& fl, d
   std::vector<double> n, P;
   for (double x = n_idle; x <= n_max + 1e-9; x += 1.0) {
     n.push_back(x);
-    P.push_back(fl(x) * x * M_PI / 30.0);
+    P.push_back(fl(x) * units::rpmToRadps(x));
   }
   if (n.size() < 10) throw InputError("whtc", "full load", "speed range too small");
   const auto it = std::max_element(P.begin(), P.end());

@@ -1,6 +1,7 @@
 #include "engine_map/engine_scaling.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "common/errors.hpp"
 
@@ -11,7 +12,7 @@ double peakTorque(const FullLoadCurve& c) {
 }
 
 double peakPower(const FullLoadCurve& c, double* speed_at_peak_rad_s) {
-  double best = -1e300, wbest = 0.0;
+  double best = -std::numeric_limits<double>::infinity(), wbest = 0.0;  // peak power [W] so far
   auto consider = [&](double w, double p) {
     if (p > best) { best = p; wbest = w; }
   };

@@ -3,12 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/species.hpp"
 #include "common/units.hpp"
 
 namespace hbt::engine_map {
 namespace {
-constexpr double kM_C = 12.011, kM_H = 1.008, kM_O2 = 31.999, kM_N2 = 28.155;
-constexpr double kM_CO2 = 44.010, kM_H2O = 18.015, kN2_per_O2 = 3.773;
+// Molar masses [g/mol]: atoms C and H, N2* (atmospheric nitrogen incl. argon) of this gas path;
+// O2, CO2 and H2O from common/species.
+constexpr double kM_C = 12.011, kM_H = 1.008, kM_N2 = 28.155;
+constexpr double kM_O2 = species::gPerMol(species::kO2_kg_mol);
+constexpr double kM_CO2 = species::gPerMol(species::kCO2_kg_mol);
+constexpr double kM_H2O = species::gPerMol(species::kH2O_kg_mol);
+constexpr double kN2_per_O2 = 3.773;  // mol N2* per mol O2 in air
 }  // namespace
 
 double stoichiometricAfr(double y) {
@@ -18,7 +24,7 @@ double stoichiometricAfr(double y) {
 ExhaustComposition leanProducts(double lambda, double y) {
   const double a = 1.0 + y / 4.0;
   ExhaustComposition c;
-  if (!(lambda < 1e8)) {  // no fuel: air
+  if (!(lambda < kLambdaAirOnly)) {  // no fuel: air
     const double o = kM_O2, n = kN2_per_O2 * kM_N2;
     c.y_O2 = o / (o + n);
     c.y_N2 = n / (o + n);
@@ -54,7 +60,7 @@ GasPathState computeGasPath(const GasPathParams& p, double w, double torque_Nm,
       p.volumetric_efficiency * rho_im * p.displacement_m3 * wpos / (4.0 * units::kPi);
   s.exhaust_mass_flow_kg_s = s.air_mass_flow_kg_s + fuel_kg_s;
   const double afr = stoichiometricAfr(p.fuel_h_to_c_molar);
-  s.lambda = fuel_kg_s > 0.0 ? s.air_mass_flow_kg_s / (afr * fuel_kg_s) : 1e9;
+  s.lambda = fuel_kg_s > 0.0 ? s.air_mass_flow_kg_s / (afr * fuel_kg_s) : kLambdaNoFuel;
   s.comp = leanProducts(s.lambda, p.fuel_h_to_c_molar);
 
   s.fuel_power_W = fuel_kg_s * units::kDieselLhv_J_kg;

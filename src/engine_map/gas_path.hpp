@@ -31,6 +31,11 @@
 
 namespace hbt::engine_map {
 
+// Air-fuel equivalence ratio [-] reported without fuel (no combustion: the gas is air).
+constexpr double kLambdaNoFuel = 1e9;
+// lambda [-] at and above which leanProducts() gives air (no fuel).
+constexpr double kLambdaAirOnly = 1e8;
+
 struct GasPathParams {
   double displacement_m3 = 6.72e-3;            // swept volume V_d [m^3] (SPEC §3: 6.72 l)
   double volumetric_efficiency = 0.90;         // η_v [-] referred to intake-manifold density
@@ -60,7 +65,7 @@ struct GasPathState {
   double compressor_out_T_K = 0.0;       // [K]
   double intake_manifold_T_K = 0.0;      // [K]
   double air_mass_flow_kg_s = 0.0;       // [kg/s]
-  double lambda = 1e9;                   // air-fuel equivalence ratio [-] (1e9 = no fuel)
+  double lambda = kLambdaNoFuel;         // air-fuel equivalence ratio [-]
   double exhaust_mass_flow_kg_s = 0.0;   // air + fuel [kg/s]
   double exhaust_T_K = 0.0;              // turbine-outlet temperature [K]
   double fuel_power_W = 0.0;             // ṁ_f LHV [W]

@@ -51,7 +51,7 @@ Table2D readNoxMap(const std::string& path, const std::string& key) {
     cell = ei[r] * 1e-3;  // g/kg -> kg/kg
   }
   std::vector<double> w(ns.size());
-  for (std::size_t i = 0; i < ns.size(); ++i) w[i] = ns[i] * units::kPi / 30.0;
+  for (std::size_t i = 0; i < ns.size(); ++i) w[i] = units::rpmToRadps(ns[i]);
   return Table2D(w, ls, v, path, key);
 }
 

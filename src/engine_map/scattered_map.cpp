@@ -36,6 +36,119 @@ double distToSegment2(const P& p, const P& a, const P& b) {
   return eu * eu + ev * ev;
 }
 
+using Tri = std::array<int, 3>;
+
+// Orientation tolerance [-] (coordinates scaled to the unit square): a point this close to an
+// edge's line counts as on it.
+constexpr double kOrientEps = 1e-14;
+// Half-width of the super-triangle enclosing the unit square [-] (a wide margin).
+constexpr double kSuperTriangleSize = 1.0e3;
+// pruneOffender() results besides a triangle index (>= 0, to leave the cavity) and
+// -2 - j (neighbour j to join it): the cavity is star-shaped, or it is degenerate (p on the
+// hull of the super-triangle).
+constexpr int kStarShaped = -1;
+constexpr int kDegenerateCavity = -1000000000;
+
+bool sharesEdge(const Tri& a, const Tri& b) {
+  int common = 0;
+  for (int i : a)
+    for (int j : b) common += (i == j);
+  return common == 2;
+}
+
+// Index of the first triangle containing p (on an edge counts as inside), -1 if none.
+int locateTriangle(const std::vector<P>& pts, const std::vector<Tri>& tris, const P& p) {
+  int seed = -1;
+  for (std::size_t k = 0; k < tris.size() && seed < 0; ++k) {
+    const auto& t = tris[k];
+    if (orient(pts[t[0]], pts[t[1]], p) >= -kOrientEps &&
+        orient(pts[t[1]], pts[t[2]], p) >= -kOrientEps &&
+        orient(pts[t[2]], pts[t[0]], p) >= -kOrientEps)
+      seed = static_cast<int>(k);
+  }
+  return seed;
+}
+
+// Cavity: triangles connected to the seed (through shared edges) whose circumcircle
+// contains p. Candidates first (few), then connectivity among them. 1 marks a cavity triangle.
+std::vector<char> cavity(const std::vector<P>& pts, const std::vector<Tri>& tris, const P& p,
+                         int seed) {
+  std::vector<char> bad(tris.size(), 0);
+  std::vector<int> cand;
+  for (std::size_t k = 0; k < tris.size(); ++k) {
+    const auto& t = tris[k];
+    if (static_cast<int>(k) != seed && inCircle(pts[t[0]], pts[t[1]], pts[t[2]], p) > 0.0)
+      cand.push_back(static_cast<int>(k));
+  }
+  bad[seed] = 1;
+  std::vector<int> stack{seed};
+  while (!stack.empty()) {
+    const int k = stack.back();
+    stack.pop_back();
+    for (int c : cand)
+      if (!bad[c] && sharesEdge(tris[c], tris[k])) { bad[c] = 1; stack.push_back(c); }
+  }
+  return bad;
+}
+
+// The cavity's boundary edges (into `boundary`) up to the first one that does not see p strictly
+// on its inner side; returns what to change (see kStarShaped) or kStarShaped if none.
+int pruneOffender(const std::vector<P>& pts, const std::vector<Tri>& tris, const P& p, int seed,
+                  const std::vector<char>& bad, std::vector<std::pair<int, int>>& boundary) {
+  std::map<std::pair<int, int>, int> edgeCount;
+  for (std::size_t k = 0; k < tris.size(); ++k) {
+    if (!bad[k]) continue;
+    for (int e = 0; e < 3; ++e) {
+      const int a = tris[k][e], b = tris[k][(e + 1) % 3];
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      ++edgeCount[key];
+    }
+  }
+  boundary.clear();
+  int offender = kStarShaped;
+  for (std::size_t k = 0; k < tris.size() && offender < 0; ++k) {
+    if (!bad[k]) continue;
+    for (int e = 0; e < 3; ++e) {
+      const int a = tris[k][e], b = tris[k][(e + 1) % 3];
+      if (edgeCount[{std::min(a, b), std::max(a, b)}] != 1) continue;
+      if (orient(pts[a], pts[b], p) <= kOrientEps) {
+        if (static_cast<int>(k) != seed) { offender = static_cast<int>(k); break; }
+        // p on a boundary edge of its own triangle: the neighbour across that edge must be
+        // in the cavity too (p lies strictly inside its circumcircle); add it.
+        for (std::size_t j = 0; j < tris.size(); ++j)
+          if (!bad[j] && sharesEdge(tris[j], tris[k])) {
+            const auto& tj = tris[j];
+            bool hasA = false, hasB = false;
+            for (int q : tj) { hasA |= q == a; hasB |= q == b; }
+            if (hasA && hasB) { offender = -2 - static_cast<int>(j); break; }
+          }
+        if (offender == kStarShaped) offender = kDegenerateCavity;
+        break;
+      }
+      boundary.push_back({a, b});
+    }
+  }
+  return offender;
+}
+
+// Prunes the cavity until every boundary edge sees p strictly on its inner side (star-shaped
+// cavity); returns its boundary edges.
+std::vector<std::pair<int, int>> starShapedCavity(const std::vector<P>& pts,
+                                                  const std::vector<Tri>& tris, const P& p,
+                                                  int seed, std::vector<char>& bad,
+                                                  const std::string& source) {
+  std::vector<std::pair<int, int>> boundary;
+  for (int iter = 0;; ++iter) {
+    if (iter > 10000) throw InputError(source, "points", "triangulation failed (cavity)");
+    const int offender = pruneOffender(pts, tris, p, seed, bad, boundary);
+    if (offender == kStarShaped) break;
+    if (offender >= 0) bad[offender] = 0;
+    else if (offender > kDegenerateCavity) bad[-2 - offender] = 1;
+    else throw InputError(source, "points", "triangulation failed (degenerate cavity)");
+  }
+  return boundary;
+}
+
 }  // namespace
 
 ScatteredLinearMap::ScatteredLinearMap(std::vector<double> x, std::vector<double> y,
@@ -73,93 +186,20 @@ void ScatteredLinearMap::triangulate(const std::string& source) {
   std::vector<P> pts(n + 3);
   for (int i = 0; i < n; ++i) pts[i] = {pu_[i], pv_[i]};
   // Super-triangle enclosing [0,1]^2 with a wide margin.
-  const double M = 1.0e3;
+  const double M = kSuperTriangleSize;
   pts[n] = {-M, -M};
   pts[n + 1] = {M, -M};
   pts[n + 2] = {0.5, M};
-  std::vector<std::array<int, 3>> tris{{n, n + 1, n + 2}};
-  const double eps_orient = 1e-14;
+  std::vector<Tri> tris{{n, n + 1, n + 2}};
 
+  // Bowyer-Watson: each point replaces its cavity by the fan of the cavity's boundary edges.
   for (int ip = 0; ip < n; ++ip) {
     const P& p = pts[ip];
-    // Triangle containing p (on an edge counts as inside).
-    int seed = -1;
-    for (std::size_t k = 0; k < tris.size() && seed < 0; ++k) {
-      const auto& t = tris[k];
-      if (orient(pts[t[0]], pts[t[1]], p) >= -eps_orient &&
-          orient(pts[t[1]], pts[t[2]], p) >= -eps_orient &&
-          orient(pts[t[2]], pts[t[0]], p) >= -eps_orient)
-        seed = static_cast<int>(k);
-    }
+    const int seed = locateTriangle(pts, tris, p);
     if (seed < 0) throw InputError(source, "points", "triangulation failed (point location)");
-    // Cavity: triangles connected to the seed (through shared edges) whose circumcircle
-    // contains p. Candidates first (few), then connectivity among them.
-    std::vector<char> bad(tris.size(), 0);
-    auto sharesEdge = [](const std::array<int, 3>& a, const std::array<int, 3>& b) {
-      int common = 0;
-      for (int i : a)
-        for (int j : b) common += (i == j);
-      return common == 2;
-    };
-    std::vector<int> cand;
-    for (std::size_t k = 0; k < tris.size(); ++k) {
-      const auto& t = tris[k];
-      if (static_cast<int>(k) != seed && inCircle(pts[t[0]], pts[t[1]], pts[t[2]], p) > 0.0)
-        cand.push_back(static_cast<int>(k));
-    }
-    bad[seed] = 1;
-    std::vector<int> stack{seed};
-    while (!stack.empty()) {
-      const int k = stack.back();
-      stack.pop_back();
-      for (int c : cand)
-        if (!bad[c] && sharesEdge(tris[c], tris[k])) { bad[c] = 1; stack.push_back(c); }
-    }
-    // Prune until every boundary edge sees p strictly on its inner side (star-shaped cavity).
-    std::vector<std::pair<int, int>> boundary;
-    for (int iter = 0;; ++iter) {
-      if (iter > 10000) throw InputError(source, "points", "triangulation failed (cavity)");
-      std::map<std::pair<int, int>, int> edgeCount;
-      std::map<std::pair<int, int>, int> edgeOwner;
-      for (std::size_t k = 0; k < tris.size(); ++k) {
-        if (!bad[k]) continue;
-        for (int e = 0; e < 3; ++e) {
-          const int a = tris[k][e], b = tris[k][(e + 1) % 3];
-          const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-          ++edgeCount[key];
-          edgeOwner[key] = static_cast<int>(k);
-        }
-      }
-      boundary.clear();
-      int offender = -1;
-      for (std::size_t k = 0; k < tris.size() && offender < 0; ++k) {
-        if (!bad[k]) continue;
-        for (int e = 0; e < 3; ++e) {
-          const int a = tris[k][e], b = tris[k][(e + 1) % 3];
-          if (edgeCount[{std::min(a, b), std::max(a, b)}] != 1) continue;
-          if (orient(pts[a], pts[b], p) <= eps_orient) {
-            if (static_cast<int>(k) != seed) { offender = static_cast<int>(k); break; }
-            // p on a boundary edge of its own triangle: the neighbour across that edge must be
-            // in the cavity too (p lies strictly inside its circumcircle); add it.
-            for (std::size_t j = 0; j < tris.size(); ++j)
-              if (!bad[j] && sharesEdge(tris[j], tris[k])) {
-                const auto& tj = tris[j];
-                bool hasA = false, hasB = false;
-                for (int q : tj) { hasA |= q == a; hasB |= q == b; }
-                if (hasA && hasB) { offender = -2 - static_cast<int>(j); break; }
-              }
-            if (offender == -1) offender = -1000000000;  // p on the hull of the super-triangle
-            break;
-          }
-          boundary.push_back({a, b});
-        }
-      }
-      if (offender == -1) break;
-      if (offender >= 0) bad[offender] = 0;
-      else if (offender > -1000000000) bad[-2 - offender] = 1;
-      else throw InputError(source, "points", "triangulation failed (degenerate cavity)");
-    }
-    std::vector<std::array<int, 3>> next;
+    std::vector<char> bad = cavity(pts, tris, p, seed);
+    const std::vector<std::pair<int, int>> boundary = starShapedCavity(pts, tris, p, seed, bad, source);
+    std::vector<Tri> next;
     next.reserve(tris.size() + 2);
     for (std::size_t k = 0; k < tris.size(); ++k)
       if (!bad[k]) next.push_back(tris[k]);

@@ -36,18 +36,17 @@ PipeGeometry PipeGeometry::build(const PipeConfig& c) {
       g.D_face[j] = c.diameter_left + s * (c.diameter_right - c.diameter_left);
     }
   }
-  const double pi = units::kPi;
   g.A_face.resize(g.n + 1);
   for (int j = 0; j <= g.n; ++j) {
     if (!(g.D_face[j] > 0.0)) throw InputError(src, "diameter", "must be > 0 m");
-    g.A_face[j] = 0.25 * pi * g.D_face[j] * g.D_face[j];
+    g.A_face[j] = 0.25 * units::kPi * g.D_face[j] * g.D_face[j];
   }
   g.A_cell.resize(g.n);
   g.D_cell.resize(g.n);
   g.V_cell.resize(g.n);
   for (int i = 0; i < g.n; ++i) {
     g.A_cell[i] = 0.5 * (g.A_face[i] + g.A_face[i + 1]);
-    g.D_cell[i] = std::sqrt(4.0 * g.A_cell[i] / pi);
+    g.D_cell[i] = std::sqrt(4.0 * g.A_cell[i] / units::kPi);
     g.V_cell[i] = g.A_cell[i] * g.dx;
   }
   return g;

@@ -6,6 +6,7 @@
 namespace hbt::gasdyn {
 
 namespace {
+// Upper bound of a finite density [kg/m^3] or pressure [Pa]: a cell above it has diverged.
 constexpr double kHuge = 1e300;
 
 inline double limiter(Limiter l, double th) {

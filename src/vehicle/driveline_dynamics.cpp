@@ -9,7 +9,7 @@
 namespace hbt::vehicle {
 
 double VehicleModel::gearboxInputSpeed(double v, double w) const {
-  switch (gs_.mode) {
+  switch (gear_state_.mode) {
     case DriveMode::Locked: return w;
     case DriveMode::Shifting: return w;  // input shaft still turns with the engine
     case DriveMode::Converter: return v * k_[1];
@@ -20,10 +20,10 @@ double VehicleModel::gearboxInputSpeed(double v, double w) const {
 VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, int dir) const {
   Rates r;
   const double w_half = 0.5 * p_.driveline.idle_speed_rad_s;
-  const double w_out = v * ia_r_;
-  const int g = gs_.gear;
+  const double w_out = v * axle_ratio_per_radius_1_m_;
+  const int g = gear_state_.gear;
   // Gear load loss at the input speed referred to the engaged (or on-coming) gear.
-  const double w_in = gs_.mode == DriveMode::Shifting ? v * k_[g] : gearboxInputSpeed(v, w);
+  const double w_in = gear_state_.mode == DriveMode::Shifting ? v * k_[g] : gearboxInputSpeed(v, w);
   r.T_eng = c.engine_on ? c.T_e : -std::fabs(c.T_e) * smoothSign(w);  // stopped: friction only
   r.T_em = c.T_em;
   const double wa = std::max(std::fabs(w), w_half);
@@ -33,15 +33,15 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
   // the turbine side; locked and shifting: the input shaft turns with the crank). In neutral
   // the forward clutch is open and the geartrain stands: only the pump-side spin loss
   // (oil pump + open-clutch drag + free turbine) acts at the pump speed.
-  if (gs_.mode == DriveMode::Neutral) {
+  if (gear_state_.mode == DriveMode::Neutral) {
     r.T_drag = p_.driveline.neutral_drag_torque_Nm * smoothSign(w);
-  } else if (gs_.mode == DriveMode::Converter) {
-    r.T_drag_in = gl_.drag(w_in) * smoothSign(w_in);
+  } else if (gear_state_.mode == DriveMode::Converter) {
+    r.T_drag_in = gear_loss_map_.drag(w_in) * smoothSign(w_in);
   } else {
-    r.T_drag = gl_.drag(w) * smoothSign(w);
+    r.T_drag = gear_loss_map_.drag(w) * smoothSign(w);
   }
-  if (gs_.mode != DriveMode::Neutral) {
-    r.T_gload = p_.gearbox.gear_load_loss_factor[g - 1] * gl_.load(w_in, T_in_est_) * smoothSign(w_in);
+  if (gear_state_.mode != DriveMode::Neutral) {
+    r.T_gload = p_.gearbox.gear_load_loss_factor[g - 1] * gear_loss_map_.load(w_in, T_in_est_) * smoothSign(w_in);
     r.T_axl = (1.0 - p_.driveline.axle_efficiency) * std::fabs(T_ax_est_) * smoothSign(w_out);
   }
   r.T_ret = ret_.torque(w_out) * smoothSign(w_out);
@@ -50,23 +50,23 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
   r.F_brake = c.F_brake * sv;
   r.F_aero = road_.aero(v, c.rho);
   r.F_grade = road_.gradeForce(c.grade);
-  const double F_res = r.F_roll + r.F_aero + r.F_grade + r.F_brake + ia_r_ * (r.T_ret + r.T_axl);
+  const double F_res = r.F_roll + r.F_aero + r.F_grade + r.F_brake + axle_ratio_per_radius_1_m_ * (r.T_ret + r.T_axl);
   const double T_crank = r.T_eng + r.T_em - r.T_aux - r.T_drag;
-  switch (gs_.mode) {
+  switch (gear_state_.mode) {
     case DriveMode::Locked: {
       const double k = k_[g];
-      r.dv = (k * (T_crank - r.T_gload) - F_res) / (M_ + (J_E_ + J_GI_) * k * k);
+      r.dv = (k * (T_crank - r.T_gload) - F_res) / (inertia_mass_kg_ + (engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_) * k * k);
       r.dw = k * r.dv;
       break;
     }
     case DriveMode::Shifting: {
-      const double k = k_[g], J = J_E_ + J_GI_;
+      const double k = k_[g], J = engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_;
       const double slip = w - k * v;
       double Tc = T_crank + J * shift_slip0_ / p_.shift.shift_duration_s;
       if (Tc * slip < 0.0 || slip * shift_slip0_ <= 0.0) Tc = 0.0;  // clutch cannot create energy
       r.T_clutch = Tc;
       r.dw = (T_crank - Tc) / J;
-      r.dv = (k * (Tc - r.T_gload) - F_res) / M_;
+      r.dv = (k * (Tc - r.T_gload) - F_res) / inertia_mass_kg_;
       break;
     }
     case DriveMode::Converter: {
@@ -74,17 +74,17 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
       r.T_turb = tc_.turbineTorque(w, w_in);
       if (locking_) {  // lock-up clutch slipping in parallel with the converter
         const double slip = w - w_in;
-        double Tc = T_crank - r.T_pump + J_E_ * shift_slip0_ / p_.shift.lockup_duration_s;
+        double Tc = T_crank - r.T_pump + engine_inertia_kg_m2_ * shift_slip0_ / p_.shift.lockup_duration_s;
         if (Tc * slip < 0.0 || slip * shift_slip0_ <= 0.0) Tc = 0.0;
         r.T_clutch = Tc;
       }
-      r.dw = (T_crank - r.T_pump - r.T_clutch) / J_E_;
-      r.dv = (k_[1] * (r.T_turb + r.T_clutch - r.T_gload - r.T_drag_in) - F_res) / (M_ + J_GI_ * k_[1] * k_[1]);
+      r.dw = (T_crank - r.T_pump - r.T_clutch) / engine_inertia_kg_m2_;
+      r.dv = (k_[1] * (r.T_turb + r.T_clutch - r.T_gload - r.T_drag_in) - F_res) / (inertia_mass_kg_ + gearbox_input_inertia_kg_m2_ * k_[1] * k_[1]);
       break;
     }
     default:
-      r.dw = T_crank / (J_E_ + J_GI_);
-      r.dv = -F_res / M_;
+      r.dw = T_crank / (engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_);
+      r.dv = -F_res / inertia_mass_kg_;
   }
   return r;
 }
@@ -92,9 +92,9 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
 // At v = 0: is the bus held by rolling resistance + brake? Else *dir = direction of motion.
 bool VehicleModel::held(const StepConst& c, int* dir) const {
   const Rates r0 = rates(0.0, w_, c, 0);  // Coulomb terms off
-  double M = M_;
-  if (gs_.mode == DriveMode::Locked) M += (J_E_ + J_GI_) * k_[gs_.gear] * k_[gs_.gear];
-  if (gs_.mode == DriveMode::Converter) M += J_GI_ * k_[1] * k_[1];
+  double M = inertia_mass_kg_;
+  if (gear_state_.mode == DriveMode::Locked) M += (engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_) * k_[gear_state_.gear] * k_[gear_state_.gear];
+  if (gear_state_.mode == DriveMode::Converter) M += gearbox_input_inertia_kg_m2_ * k_[1] * k_[1];
   const double F_other = r0.dv * M;
   const double R = road_.rolling(c.grade) + c.F_brake;
   if (std::fabs(F_other) <= R) return true;
@@ -105,10 +105,10 @@ bool VehicleModel::held(const StepConst& c, int* dir) const {
 void VehicleModel::book(const Rates& r, double v0, double v2, double w0, double w2, double h) {
   VehicleEnergy& e = out_.energy;
   const double vm = 0.5 * (v0 + v2), wm = 0.5 * (w0 + w2);
-  const double w_out = vm * ia_r_;
-  const double w_in = gs_.mode == DriveMode::Locked ? wm
-                      : gs_.mode == DriveMode::Converter ? vm * k_[1]
-                      : gs_.mode == DriveMode::Shifting ? vm * k_[gs_.gear] : 0.0;
+  const double w_out = vm * axle_ratio_per_radius_1_m_;
+  const double w_in = gear_state_.mode == DriveMode::Locked ? wm
+                      : gear_state_.mode == DriveMode::Converter ? vm * k_[1]
+                      : gear_state_.mode == DriveMode::Shifting ? vm * k_[gear_state_.gear] : 0.0;
   e.engine_J += r.T_eng * wm * h;
   e.em_J += r.T_em * wm * h;
   e.aux_J += r.T_aux * wm * h;
@@ -118,13 +118,13 @@ void VehicleModel::book(const Rates& r, double v0, double v2, double w0, double 
   e.retarder_J += r.T_ret * w_out * h;
   e.axle_loss_J += r.T_axl * w_out * h;
   // Slipping clutch heat: gear change -> shift loss, lock-up clutch -> TC loss.
-  const double clutch = gs_.gear > 0 ? r.T_clutch * (wm - vm * k_[gs_.gear]) * h : 0.0;
-  (gs_.mode == DriveMode::Converter ? e.tc_loss_J : e.shift_loss_J) += clutch;
+  const double clutch = gear_state_.gear > 0 ? r.T_clutch * (wm - vm * k_[gear_state_.gear]) * h : 0.0;
+  (gear_state_.mode == DriveMode::Converter ? e.tc_loss_J : e.shift_loss_J) += clutch;
   e.rolling_J += r.F_roll * vm * h;
   e.aero_J += r.F_aero * vm * h;
   e.grade_J += r.F_grade * vm * h;
   e.brake_J += r.F_brake * vm * h;
-  e.wheel_J += (M_ * (v2 - v0) / h + r.F_roll + r.F_aero + r.F_grade + r.F_brake) * vm * h;
+  e.wheel_J += (inertia_mass_kg_ * (v2 - v0) / h + r.F_roll + r.F_aero + r.F_grade + r.F_brake) * vm * h;
   s_ += vm * h;
 }
 
@@ -152,12 +152,12 @@ void VehicleModel::substep(double h, const StepConst& c, int depth) {
     Rates r1 = rates(0.0, w0, c, 0);
     r1.dv = 0.0;
     r1.F_roll = r1.F_brake = 0.0;
-    if (gs_.mode == DriveMode::Locked) r1.dw = 0.0;
+    if (gear_state_.mode == DriveMode::Locked) r1.dw = 0.0;
     const double w1 = w0 + h * r1.dw;
     Rates r2 = rates(0.0, w1, c, 0);
     r2.dv = 0.0;
     r2.F_roll = r2.F_brake = 0.0;
-    if (gs_.mode == DriveMode::Locked) r2.dw = 0.0;
+    if (gear_state_.mode == DriveMode::Locked) r2.dw = 0.0;
     used = avg(r1, r2);
     w_ = w0 + h * used.dw;
     book(used, 0.0, 0.0, w0, w_, h);
@@ -169,7 +169,7 @@ void VehicleModel::substep(double h, const StepConst& c, int depth) {
       const double ts = -v0 / r1.dv;
       v_ = 0.0;
       w_ = w0 + ts * r1.dw;
-      if (gs_.mode == DriveMode::Locked) w_ = 0.0;
+      if (gear_state_.mode == DriveMode::Locked) w_ = 0.0;
       book(r1, v0, 0.0, w0, w_, ts);
       h_ += 0.5 * v0 * ts * sin_a;
       last_dv_ = r1.dv;
@@ -193,47 +193,47 @@ void VehicleModel::substep(double h, const StepConst& c, int depth) {
   if (w_ < 0.0) {  // crank cannot turn backwards (engine stopped): clamp, book the difference
     const double ke0 = kineticEnergy();
     w_ = 0.0;
-    if (gs_.mode == DriveMode::Locked) v_ = 0.0;
+    if (gear_state_.mode == DriveMode::Locked) v_ = 0.0;
     out_.energy.correction_J += ke0 - kineticEnergy();
   }
   // Transmitted torques for the next loss evaluation.
-  switch (gs_.mode) {
+  switch (gear_state_.mode) {
     case DriveMode::Locked:
-      T_in_est_ = used.T_eng + used.T_em - used.T_aux - used.T_drag - (J_E_ + J_GI_) * used.dw;
-      T_ax_est_ = p_.driveline.gear_ratios[gs_.gear - 1] * (T_in_est_ - used.T_gload);
+      T_in_est_ = used.T_eng + used.T_em - used.T_aux - used.T_drag - (engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_) * used.dw;
+      T_ax_est_ = p_.driveline.gear_ratios[gear_state_.gear - 1] * (T_in_est_ - used.T_gload);
       break;
     case DriveMode::Shifting:
       T_in_est_ = used.T_clutch;
-      T_ax_est_ = p_.driveline.gear_ratios[gs_.gear - 1] * (T_in_est_ - used.T_gload);
+      T_ax_est_ = p_.driveline.gear_ratios[gear_state_.gear - 1] * (T_in_est_ - used.T_gload);
       break;
     case DriveMode::Converter:
-      T_in_est_ = used.T_turb + used.T_clutch - J_GI_ * k_[1] * used.dv;
+      T_in_est_ = used.T_turb + used.T_clutch - gearbox_input_inertia_kg_m2_ * k_[1] * used.dv;
       T_ax_est_ = p_.driveline.gear_ratios[0] * (T_in_est_ - used.T_gload);
       break;
     default:
       T_in_est_ = T_ax_est_ = 0.0;
   }
-  if (gs_.mode == DriveMode::Shifting || locking_) {
+  if (gear_state_.mode == DriveMode::Shifting || locking_) {
     shift_elapsed_ += h;
     const double ts = locking_ ? p_.shift.lockup_duration_s : p_.shift.shift_duration_s;
-    const double slip = w_ - k_[gs_.gear] * v_;
+    const double slip = w_ - k_[gear_state_.gear] * v_;
     // Synchronised (slip crossed zero or is below two substeps of the sync rate) or timed out.
     const double band = 2.0 * h * std::fabs(shift_slip0_) / ts + 1e-3;
     if (slip * shift_slip0_ <= 0.0 || std::fabs(slip) < band || shift_elapsed_ > 3.0 * ts) {
       locking_ = false;
-      transition({DriveMode::Locked, gs_.gear}, false);  // synchronised: the clutch locks
+      transition({DriveMode::Locked, gear_state_.gear}, false);  // synchronised: the clutch locks
     }
   }
 }
 
 double VehicleModel::kineticEnergy() const {
   const double w_in = gearboxInputSpeed(v_, w_);
-  return 0.5 * M_ * v_ * v_ + 0.5 * J_E_ * w_ * w_ + 0.5 * J_GI_ * w_in * w_in;
+  return 0.5 * inertia_mass_kg_ * v_ * v_ + 0.5 * engine_inertia_kg_m2_ * w_ * w_ + 0.5 * gearbox_input_inertia_kg_m2_ * w_in * w_in;
 }
 
 void VehicleModel::transition(const GearState& to, bool allow_slip) {
   if (allow_slip && to.mode == DriveMode::Locked && to.gear == 1 &&
-      gs_.mode == DriveMode::Converter && p_.shift.lockup_duration_s > 0.0) {
+      gear_state_.mode == DriveMode::Converter && p_.shift.lockup_duration_s > 0.0) {
     if (locking_) return;  // lock-up already in progress
     const double slip0 = w_ - k_[1] * v_;
     if (std::fabs(slip0) > 1e-6) {
@@ -244,12 +244,12 @@ void VehicleModel::transition(const GearState& to, bool allow_slip) {
     }
   }
   locking_ = false;
-  if (allow_slip && to.mode == DriveMode::Locked && gs_.mode == DriveMode::Locked &&
-      to.gear != gs_.gear && p_.shift.shift_duration_s > 0.0) {
+  if (allow_slip && to.mode == DriveMode::Locked && gear_state_.mode == DriveMode::Locked &&
+      to.gear != gear_state_.gear && p_.shift.shift_duration_s > 0.0) {
     // Gear change with a slip phase: no impulse now, the clutch synchronises (rates()).
     const double slip0 = w_ - k_[to.gear] * v_;
     if (std::fabs(slip0) > 1e-6) {
-      gs_ = {DriveMode::Shifting, to.gear};
+      gear_state_ = {DriveMode::Shifting, to.gear};
       shift_slip0_ = slip0;
       shift_elapsed_ = 0.0;
       t_since_shift_ = 0.0;
@@ -261,27 +261,27 @@ void VehicleModel::transition(const GearState& to, bool allow_slip) {
   const bool heldAtRest = v_ == 0.0 && brake_force_ > 0.0;
   switch (to.mode) {
     case DriveMode::Neutral:
-      w_ = (J_E_ * w_ + J_GI_ * w_in) / (J_E_ + J_GI_);
+      w_ = (engine_inertia_kg_m2_ * w_ + gearbox_input_inertia_kg_m2_ * w_in) / (engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_);
       break;
     case DriveMode::Converter: {
       // Engaging from neutral at standstill: the turbine is stopped by the forward clutch while
       // the bus stands (driver still on the brake): its momentum goes into the brake/tyres.
       const double k = k_[1];
-      const bool standing = heldAtRest || (v_ == 0.0 && gs_.mode == DriveMode::Neutral);
-      v_ = standing ? 0.0 : (M_ * v_ + J_GI_ * w_in * k) / (M_ + J_GI_ * k * k);
+      const bool standing = heldAtRest || (v_ == 0.0 && gear_state_.mode == DriveMode::Neutral);
+      v_ = standing ? 0.0 : (inertia_mass_kg_ * v_ + gearbox_input_inertia_kg_m2_ * w_in * k) / (inertia_mass_kg_ + gearbox_input_inertia_kg_m2_ * k * k);
       break;
     }
     case DriveMode::Locked: {
       const double k = k_[to.gear];
-      v_ = (M_ * v_ + (J_E_ * w_ + J_GI_ * w_in) * k) / (M_ + (J_E_ + J_GI_) * k * k);
+      v_ = (inertia_mass_kg_ * v_ + (engine_inertia_kg_m2_ * w_ + gearbox_input_inertia_kg_m2_ * w_in) * k) / (inertia_mass_kg_ + (engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_) * k * k);
       w_ = k * v_;
       break;
     }
     case DriveMode::Shifting:  // entered above without impulse
       break;
   }
-  if (to.gear != gs_.gear && gs_.mode != DriveMode::Shifting) t_since_shift_ = 0.0;
-  gs_ = to;
+  if (to.gear != gear_state_.gear && gear_state_.mode != DriveMode::Shifting) t_since_shift_ = 0.0;
+  gear_state_ = to;
   T_in_est_ = T_ax_est_ = 0.0;
   out_.energy.shift_loss_J += ke0 - kineticEnergy();
 }

@@ -29,12 +29,16 @@ struct GearState {
   bool operator!=(const GearState& o) const { return !(*this == o); }
 };
 
+// Time since the last gear change [s] before the first one: longer than any minimum time
+// between shifts (no shift yet).
+constexpr double kNoShiftYet_s = 1e9;
+
 struct ShiftInputs {
   double engine_speed_rad_s = 0.0;
   double gearbox_input_speed_rad_s = 0.0;  // turbine speed in 1C; = engine speed when locked
   double output_speed_rad_s = 0.0;         // gearbox output speed (wheel speed · axle ratio)
   double accel_pedal = 0.0;                // [0, 1]
-  double time_since_shift_s = 1e9;
+  double time_since_shift_s = kNoShiftYet_s;
   bool stopped_and_held = false;           // v = 0 and the driver holds for a stop
   bool start_request = false;              // the driver wants to move
 };

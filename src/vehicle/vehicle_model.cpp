@@ -22,19 +22,19 @@ VehicleModel::VehicleModel(const VehicleParams& p, const std::string& base_dir) 
   const auto& c = p_.chassis;
   road_ = RoadLoad(c);
   tc_ = TorqueConverter(resolve(base_dir, d.torque_converter_file), d.tc_reference_speed_rad_s);
-  gl_ = GearLossMap(resolve(base_dir, p_.gearbox.gear_loss_map_file));
+  gear_loss_map_ = GearLossMap(resolve(base_dir, p_.gearbox.gear_loss_map_file));
   ret_ = RetarderLoss(resolve(base_dir, d.retarder_loss_file));
   shift_ = ShiftStrategy(p_.shift, d.gear_ratios, d.idle_speed_rad_s);
   const double m = p_.totalMass_kg();
   driver_ = Driver(p_.driver, m);
   F_brake_max_ = driver_.maxBrakeForce();
   const double r = c.tyre_radius_m;
-  M_ = m + (c.tyres_front + c.tyres_rear) * c.wheel_inertia_kg_m2 / (r * r);
-  ia_r_ = d.axle_ratio / r;
+  inertia_mass_kg_ = m + (c.tyres_front + c.tyres_rear) * c.wheel_inertia_kg_m2 / (r * r);
+  axle_ratio_per_radius_1_m_ = d.axle_ratio / r;
   k_.assign(d.gear_ratios.size() + 1, 0.0);
-  for (std::size_t g = 1; g <= d.gear_ratios.size(); ++g) k_[g] = d.gear_ratios[g - 1] * ia_r_;
-  J_E_ = d.engine_inertia_kg_m2 + d.tc_pump_inertia_kg_m2;
-  J_GI_ = d.gearbox_input_inertia_kg_m2;
+  for (std::size_t g = 1; g <= d.gear_ratios.size(); ++g) k_[g] = d.gear_ratios[g - 1] * axle_ratio_per_radius_1_m_;
+  engine_inertia_kg_m2_ = d.engine_inertia_kg_m2 + d.tc_pump_inertia_kg_m2;
+  gearbox_input_inertia_kg_m2_ = d.gearbox_input_inertia_kg_m2;
   reset(0.0, 0, d.idle_speed_rad_s);
 }
 
@@ -51,7 +51,7 @@ void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
   w_ = std::max(w_e, 0.0);
   s_ = distance_m;
   h_ = 0.0;
-  t_since_shift_ = 1e9;
+  t_since_shift_ = kNoShiftYet_s;
   T_in_est_ = T_ax_est_ = 0.0;
   brake_force_ = accel_pedal_ = idle_integral_ = crank_accel_ = 0.0;
   hold_ = start_request_ = locking_ = false;
@@ -60,19 +60,19 @@ void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
   v_target_prev_ = v_;
   driver_.reset();
   if (gear == 0) {
-    gs_ = {DriveMode::Neutral, 0};
+    gear_state_ = {DriveMode::Neutral, 0};
   } else if (gear == 1 && v_ * k_[1] < p_.shift.lockup_min_turbine_speed_rad_s) {
-    gs_ = {DriveMode::Converter, 1};
+    gear_state_ = {DriveMode::Converter, 1};
   } else {
-    gs_ = {DriveMode::Locked, gear};
+    gear_state_ = {DriveMode::Locked, gear};
     w_ = k_[gear] * v_;
   }
   out_.energy.kinetic_initial_J = out_.energy.kinetic_J = kineticEnergy();
   out_.engine_speed_rad_s = w_;
   out_.speed_m_s = v_;
   out_.distance_m = s_;
-  out_.gear = gs_.gear;
-  out_.mode = gs_.mode;
+  out_.gear = gear_state_.gear;
+  out_.mode = gear_state_.mode;
 }
 
 double VehicleModel::auxPower(const VehicleInputs& in) const {
@@ -113,25 +113,25 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   }
 
   // 1. Shift / lock-up decision at the start of the step.
-  GearState target = gs_;
+  GearState target = gear_state_;
   if (in.neutral_request) {
     target = {DriveMode::Neutral, 0};
   } else {
     ShiftInputs si;
     si.engine_speed_rad_s = w_;
     si.gearbox_input_speed_rad_s = gearboxInputSpeed(v_, w_);
-    si.output_speed_rad_s = v_ * ia_r_;
+    si.output_speed_rad_s = v_ * axle_ratio_per_radius_1_m_;
     si.accel_pedal = accel_pedal_;
     si.time_since_shift_s = t_since_shift_;
     si.stopped_and_held = v_ == 0.0 && hold_;
     si.start_request = start_request_;
-    target = shift_.decide(gs_, si);
+    target = shift_.decide(gear_state_, si);
     // A stopped (or cranking) engine cannot drive the converter: stay in neutral until it runs.
-    if (!in.engine_on && gs_.mode == DriveMode::Neutral) target = gs_;
+    if (!in.engine_on && gear_state_.mode == DriveMode::Neutral) target = gear_state_;
   }
-  const int gear_before = gs_.gear;
-  if (target != gs_) transition(target);
-  out_.gear_changed = gs_.gear != gear_before;
+  const int gear_before = gear_state_.gear;
+  if (target != gear_state_) transition(target);
+  out_.gear_changed = gear_state_.gear != gear_before;
 
   // 2. Integrate the macro step with the inputs held. Stop-start debt of the steering pump and
   // compressor: owed while the engine stands, repaid at up to their own power once it runs.
@@ -168,12 +168,12 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   out_.altitude_m = h_;
   out_.grade = grade_profile_.empty() ? in.road_grade : grade_profile_(s_);
   out_.engine_speed_rad_s = w_;
-  out_.gear = gs_.gear;
-  out_.mode = gs_.mode;
-  out_.tc_locked = gs_.mode == DriveMode::Locked || gs_.mode == DriveMode::Shifting;
+  out_.gear = gear_state_.gear;
+  out_.mode = gear_state_.mode;
+  out_.tc_locked = gear_state_.mode == DriveMode::Locked || gear_state_.mode == DriveMode::Shifting;
   const double w_in = gearboxInputSpeed(v_, w_);
-  out_.gearbox_input_speed_rad_s = gs_.mode == DriveMode::Neutral ? 0.0 : w_in;
-  if (gs_.mode == DriveMode::Converter) {
+  out_.gearbox_input_speed_rad_s = gear_state_.mode == DriveMode::Neutral ? 0.0 : w_in;
+  if (gear_state_.mode == DriveMode::Converter) {
     out_.tc_speed_ratio = tc_.speedRatio(w_, w_in);
     out_.tc_pump_torque_Nm = tc_.pumpTorque(w_, w_in);
     out_.tc_turbine_torque_Nm = tc_.turbineTorque(w_, w_in);
@@ -199,16 +199,16 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   const double T_max_total = in.engine_max_torque_Nm + std::max(0.0, in.em_max_torque_Nm);
   double T_max = std::max(T_max_total, T_min);
   const double T_loss_crank = r.T_aux + r.T_drag;
-  const double F_drag_out = ia_r_ * (r.T_ret + r.T_axl);
-  double M_eff = M_, F_min = 0.0, F_max = 0.0;
-  const bool locked = gs_.mode == DriveMode::Locked || gs_.mode == DriveMode::Shifting;
-  const int g = locked ? gs_.gear : 1;
+  const double F_drag_out = axle_ratio_per_radius_1_m_ * (r.T_ret + r.T_axl);
+  double M_eff = inertia_mass_kg_, F_min = 0.0, F_max = 0.0;
+  const bool locked = gear_state_.mode == DriveMode::Locked || gear_state_.mode == DriveMode::Shifting;
+  const int g = locked ? gear_state_.gear : 1;
   const double k = k_[g];
   const double mu = locked ? 1.0 : tc_.torqueRatio(tc_.speedRatio(w_, v_ * k_[1]));
   const double limit = d.gear_max_input_torque_Nm[g - 1];
   if (limit > 0.0) T_max = std::min(T_max, std::max(T_min, limit / mu));
-  if (locked) M_eff += (J_E_ + J_GI_) * k * k;
-  else M_eff += J_GI_ * k * k;
+  if (locked) M_eff += (engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_) * k * k;
+  else M_eff += gearbox_input_inertia_kg_m2_ * k * k;
   // Torque at zero accelerator (pedal 0 = this, pedal 1 = T_max). Locked: the motoring torque
   // (overrun). Converter (and neutral, about to engage 1C): the idle governor keeps the engine
   // at idle against aux + pump torque, so the least force the driveline gives is the creep
@@ -222,7 +222,7 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   } else {
     const double w_i = d.idle_speed_rad_s, w_t = v_ * k_[1];
     const double T_idle = c.P_aux / w_i + r.T_drag + tc_.pumpTorque(w_i, w_t);
-    if (gs_.mode == DriveMode::Converter) T_floor = std::clamp(T_idle, T_min, T_max);
+    if (gear_state_.mode == DriveMode::Converter) T_floor = std::clamp(T_idle, T_min, T_max);
     F_min = k * (tc_.turbineTorque(w_i, w_t) - T_side) - F_drag_out;
     F_max = std::max(F_max, F_min);
   }
@@ -258,12 +258,12 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   // AND the crank speed is free (neutral, 1C); locked or shifting, the wheels impose the speed
   // and the integral is held. Gains for both engines' response (config/vehicle.yaml).
   const double e = d.idle_speed_rad_s - w_;
-  const double T_load = r.T_aux + r.T_drag + (gs_.mode == DriveMode::Converter ? r.T_pump : 0.0);
+  const double T_load = r.T_aux + r.T_drag + (gear_state_.mode == DriveMode::Converter ? r.T_pump : 0.0);
   const auto& dp = p_.driver;
   const double T_pd = T_load + dp.idle_kp_Nm_s * e - dp.idle_kd_Nm_s2 * crank_accel_;
   double T_gov = T_pd + dp.idle_ki_Nm * idle_integral_;
   if (!in.engine_on) T_gov = T_driver;  // stopped/cranking: no governor, integrator frozen
-  const bool governs = gs_.mode == DriveMode::Neutral || gs_.mode == DriveMode::Converter;
+  const bool governs = gear_state_.mode == DriveMode::Neutral || gear_state_.mode == DriveMode::Converter;
   if (T_gov > T_driver && governs && dp.idle_ki_Nm > 0.0) {
     idle_integral_ = std::clamp(idle_integral_ + e * dt, -200.0 / dp.idle_ki_Nm, 400.0 / dp.idle_ki_Nm);
     T_gov = T_pd + dp.idle_ki_Nm * idle_integral_;
@@ -271,16 +271,16 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   double demand = std::clamp(std::max(T_driver, T_gov), T_min, std::max(T_max_total, T_min));
   // TCU torque intervention in the inertia phase of an upshift: the engine gives up the torque
   // that the clutch would otherwise add by slowing the engine (smooth output torque).
-  if (gs_.mode == DriveMode::Shifting && shift_slip0_ > 0.0 && p_.shift.shift_torque_intervention)
-    demand = std::max(T_min, demand - (J_E_ + J_GI_) * shift_slip0_ / p_.shift.shift_duration_s);
+  if (gear_state_.mode == DriveMode::Shifting && shift_slip0_ > 0.0 && p_.shift.shift_torque_intervention)
+    demand = std::max(T_min, demand - (engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_) * shift_slip0_ / p_.shift.shift_duration_s);
   out_.crank_torque_demand_Nm = demand;
   out_.engine_torque_request_Nm = demand - in.em_torque_Nm;
   out_.accel_pedal = accel;
   out_.brake_force_N = brake_force_;
   out_.stop_hold = hold_;
   out_.start_request = start_request_;
-  out_.crank_to_wheel_ratio = gs_.mode == DriveMode::Locked
-      ? p_.driveline.gear_ratios[gs_.gear - 1] * p_.driveline.axle_ratio : 0.0;
+  out_.crank_to_wheel_ratio = gear_state_.mode == DriveMode::Locked
+      ? p_.driveline.gear_ratios[gear_state_.gear - 1] * p_.driveline.axle_ratio : 0.0;
 }
 
 }  // namespace hbt::vehicle

@@ -155,11 +155,11 @@ class VehicleModel {
   const VehicleOutputs& outputs() const { return out_; }
 
   // Characteristics (for tests and tools).
-  double vehicleInertiaMass_kg() const { return M_; }  // m + Σ J_wheel / r²
+  double vehicleInertiaMass_kg() const { return inertia_mass_kg_; }  // m + Σ J_wheel / r²
   double kineticEnergy() const;
   const RoadLoad& roadLoad() const { return road_; }
   const TorqueConverter& torqueConverter() const { return tc_; }
-  const GearLossMap& gearLossMap() const { return gl_; }
+  const GearLossMap& gearLossMap() const { return gear_loss_map_; }
   const VehicleParams& params() const { return p_; }
   double ratio(int gear) const { return k_[gear]; }  // k_g = i_g i_a / r [1/m]
 
@@ -192,17 +192,21 @@ class VehicleModel {
   VehicleParams p_;
   RoadLoad road_;
   TorqueConverter tc_;
-  GearLossMap gl_;
+  GearLossMap gear_loss_map_;
   RetarderLoss ret_;
   ShiftStrategy shift_;
   Driver driver_;
   Table1D grade_profile_;
   std::vector<double> k_;  // k_[0] unused, k_[g] = i_g i_a / r
-  double M_ = 0.0, J_E_ = 0.0, J_GI_ = 0.0, ia_r_ = 0.0, F_brake_max_ = 0.0;
+  double inertia_mass_kg_ = 0.0;              // m + Σ J_wheel / r² [kg]
+  double engine_inertia_kg_m2_ = 0.0;         // engine + torque-converter pump [kg m²]
+  double gearbox_input_inertia_kg_m2_ = 0.0;  // gearbox input side [kg m²]
+  double axle_ratio_per_radius_1_m_ = 0.0;    // i_a / r: axle speed per vehicle speed [1/m]
+  double F_brake_max_ = 0.0;
 
   // State.
-  double v_ = 0.0, w_ = 0.0, s_ = 0.0, h_ = 0.0, t_since_shift_ = 1e9;
-  GearState gs_;
+  double v_ = 0.0, w_ = 0.0, s_ = 0.0, h_ = 0.0, t_since_shift_ = kNoShiftYet_s;
+  GearState gear_state_;
   double T_in_est_ = 0.0, T_ax_est_ = 0.0;  // transmitted torques (loss evaluation)
   double brake_force_ = 0.0, accel_pedal_ = 0.0, idle_integral_ = 0.0;
   double crank_accel_ = 0.0;  // dω_e/dt over the last macro step (idle governor D) [rad/s²]

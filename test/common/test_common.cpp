@@ -12,6 +12,7 @@
 #include "common/csv_table.hpp"
 #include "common/errors.hpp"
 #include "common/pid.hpp"
+#include "common/species.hpp"
 #include "common/table1d.hpp"
 #include "common/units.hpp"
 #include "input_errors.hpp"
@@ -85,6 +86,14 @@ TEST(Units, AngleConversionsHaveTheFormerBits) {
   for (double d : {0.05, 0.1, 0.2, 0.5, 1.0, 2.0}) EXPECT_EQ(degToRad(d), d * M_PI / 180.0) << d;
   for (double r : {1e-3, 0.25, 3.0}) EXPECT_EQ(radToDeg(r), r * (180.0 / M_PI)) << r;
   EXPECT_EQ(radToDeg(degToRad(90.0)), 90.0);
+}
+
+TEST(Species, GramsPerMoleAreTheDecimalValues) {
+  using namespace hbt::species;
+  // the map engine's gas path works in g/mol: gPerMol() must give the decimal g/mol doubles
+  EXPECT_EQ(gPerMol(kO2_kg_mol), 31.999);
+  EXPECT_EQ(gPerMol(kCO2_kg_mol), 44.010);
+  EXPECT_EQ(gPerMol(kH2O_kg_mol), 18.015);
 }
 
 TEST(Table1D, ExactOnLinearDataAndClamped) {

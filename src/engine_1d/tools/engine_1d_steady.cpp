@@ -24,13 +24,13 @@
 #include <string>
 #include <vector>
 
+#include "common/units.hpp"
 #include "engine_1d/engine_1d.hpp"
 #include "engine_1d/steady_point.hpp"
 
 using namespace hbt::engine_1d;
 
 namespace {
-constexpr double kRpm = M_PI / 30.0;
 
 struct Args {
   int speeds = 9, loads = 21, points = 0;
@@ -77,6 +77,107 @@ Args parse(int argc, char** argv) {
   return a;
 }
 
+// One operating point of the grid: speed and load indices, speed [rpm], load [-].
+struct Pt { int is, il; double rpm, load; };
+
+// speeds x loads evenly over the ranges; --points N keeps N points spread evenly over it.
+std::vector<Pt> buildGrid(const Args& a) {
+  std::vector<Pt> grid;
+  for (int i = 0; i < a.speeds; ++i)
+    for (int j = 0; j < a.loads; ++j) {
+      const double rpm = a.speeds > 1 ? a.n_lo + (a.n_hi - a.n_lo) * i / (a.speeds - 1) : a.n_lo;
+      const double ld = a.loads > 1 ? a.load_lo + (a.load_hi - a.load_lo) * j / (a.loads - 1) : a.load_hi;
+      grid.push_back({i, j, rpm, ld});
+    }
+  if (a.points > 0 && a.points < static_cast<int>(grid.size())) {
+    std::vector<Pt> sub;
+    for (int k = 0; k < a.points; ++k)
+      sub.push_back(grid[static_cast<std::size_t>(std::lround((grid.size() - 1.0) * k / std::max(1, a.points - 1)))]);
+    grid = sub;
+  }
+  return grid;
+}
+
+// BSFC error statistics over the points run [%] and the cost.
+struct Totals {
+  int n_conv = 0, n_reg = 0;
+  double sum_abs = 0, max_abs = 0, cpu_all = 0, sim_all = 0, sum_reg = 0, max_reg = 0;
+};
+
+void writeCsvHeader(std::ofstream& csv) {
+  csv << "speed_rpm,load,torque_req_Nm,torque_Nm,bsfc_g_kWh,bsfc_ref_g_kWh,bsfc_err_pct,"
+         "fuel_kg_s,fuel_ref_kg_s,air_kg_s,lambda,boost_Pa,boost_target_Pa,T_im_K,p3_Pa,T3_K,"
+         "pmax_bar,turbo_krpm,wastegate,nox_g_kWh,exhaust_T_K,back_pressure_Pa,smoke_limited,"
+         "converged,sim_s,cpu_s,imep_gross_bar,pmep_bar,fmep_bar,eta_ind_gross,ca50_deg,"
+         "ignition_delay_deg,ambient_T_K,in_region,region_note\n";
+}
+
+// One point: run to steady state, add it to the totals, write its CSV row and its line.
+void runPoint(Engine1D& eng, const Pt& q, double w, double treq, const SteadyPointOptions& opt,
+              const BsfcValidationRegion& region, std::ofstream& csv, Totals& tot) {
+  const SteadyPointResult sp = runSteadyPoint(eng, q.rpm, treq, opt);
+  const Engine1DOutputs* o = &sp.mean;
+  const bool conv = sp.converged;
+  const double t = sp.sim_s, cpu = sp.cpu_s;
+  tot.cpu_all += cpu;
+  tot.sim_all += t;
+  const double Tb = o->brake_torque_Nm, fuel = o->fuel_mass_flow_kg_s;
+  const double fref = sp.fuel_ref_kg_s, bsfc = sp.bsfc_g_kWh, bref = sp.bsfc_ref_g_kWh;
+  const double err = sp.bsfc_err_pct;
+  std::string reason;
+  const bool in_region = region.contains(q.rpm, q.load, &reason);
+  tot.n_conv += conv;
+  tot.sum_abs += std::fabs(err);
+  tot.max_abs = std::max(tot.max_abs, std::fabs(err));
+  if (in_region) {
+    ++tot.n_reg;
+    tot.sum_reg += std::fabs(err);
+    tot.max_reg = std::max(tot.max_reg, std::fabs(err));
+  }
+  // Loss split and combustion phasing: mean over the cylinders' last complete cycles.
+  double imep_g = 0, pmep = 0, eta_g = 0, ca50 = 0, delay = 0;
+  const int ncyl = eng.assembly().cylinders();
+  for (int c = 0; c < ncyl; ++c) {
+    const auto& r = eng.assembly().cylinder(c).lastCycle();
+    imep_g += r.imep_gross_Pa / ncyl, pmep += r.pmep_Pa / ncyl, eta_g += r.eta_ind_gross / ncyl;
+    ca50 += r.ca50_deg / ncyl, delay += r.ignition_delay_main_deg / ncyl;
+  }
+  const double Vd_m3 = eng.assembly().displacement_m3();
+  const double fmep = o->friction_torque_Nm * 4.0 * hbt::units::kPi / Vd_m3;
+  csv << q.rpm << "," << q.load << "," << treq << "," << Tb << "," << bsfc << "," << bref << ","
+      << err << "," << fuel << "," << fref << "," << o->air_mass_flow_kg_s << "," << o->lambda
+      << "," << o->boost_pressure_Pa << "," << o->boost_target_Pa << ","
+      << o->intake_manifold_T_K << "," << o->turbine_inlet_p_Pa << "," << o->turbine_inlet_T_K
+      << "," << o->peak_cylinder_pressure_Pa / 1e5 << "," << hbt::units::radpsToRpm(o->turbo_speed_rad_s) / 1e3
+      << "," << o->wastegate_opening << "," << o->nox_mass_flow_kg_s / (Tb * w) * 3.6e9 << ","
+      << o->exhaust_T_K << "," << o->back_pressure_Pa << "," << o->smoke_limited << ","
+      << conv << "," << t << "," << cpu << "," << imep_g / 1e5 << "," << pmep / 1e5 << ","
+      << fmep / 1e5 << "," << eta_g << "," << ca50 << "," << delay << "," << opt.ambient_T_K << "," << in_region
+      << ",\"" << reason << "\"\n";
+  csv.flush();
+  std::printf("%6.0f rpm %5.0f Nm (%3.0f%%): Tb %6.1f BSFC %6.1f ref %6.1f err %+5.1f%% lambda %4.2f "
+              "boost %4.2f bar pmax %5.1f bar NOx %5.2f g/kWh %s %.1f s cpu %.2f s%s\n",
+              q.rpm, treq, 100 * q.load, Tb, bsfc, bref, err, o->lambda, o->boost_pressure_Pa / 1e5,
+              o->peak_cylinder_pressure_Pa / 1e5, o->nox_mass_flow_kg_s / (Tb * w) * 3.6e9,
+              conv ? "conv" : "NOT-CONVERGED", t, cpu, in_region ? "" : " (outside region)");
+  std::fflush(stdout);
+}
+
+void printSummary(const Args& a, const std::string& solver, int n, const Totals& tot,
+                  const BsfcValidationRegion& region) {
+  std::printf("\n%d points (%d converged), solver %s, ambient %.1f C: all points: BSFC error mean "
+              "|e| = %.2f %%, max |e| = %.2f %%; CPU %.1f s for %.1f s simulated (%.3f)\n",
+              n, tot.n_conv, solver.c_str(), a.ambient_C, tot.sum_abs / n, tot.max_abs, tot.cpu_all,
+              tot.sim_all, tot.cpu_all / tot.sim_all);
+  if (tot.n_reg > 0)
+    std::printf("validation region (>= %.0f rpm, >= %.0f %% load; %d points): BSFC error mean |e| = "
+                "%.2f %%, max |e| = %.2f %% (targets 3 %% / 8 %%)\n",
+                region.min_speed_rpm, 100.0 * region.min_load, tot.n_reg, tot.sum_reg / tot.n_reg, tot.max_reg);
+  else
+    std::printf("validation region (>= %.0f rpm, >= %.0f %% load): no point of this grid\n",
+                region.min_speed_rpm, 100.0 * region.min_load);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -86,98 +187,24 @@ int main(int argc, char** argv) {
     if (!a.solver.empty()) p.engine.solver = a.solver;
     p.turbo.shaft.inertia_kg_m2 *= a.inertia_factor;
     Engine1D eng(p, a.root);
-    // grid
-    struct Pt { int is, il; double rpm, load; };
-    std::vector<Pt> grid;
-    for (int i = 0; i < a.speeds; ++i)
-      for (int j = 0; j < a.loads; ++j) {
-        const double rpm = a.speeds > 1 ? a.n_lo + (a.n_hi - a.n_lo) * i / (a.speeds - 1) : a.n_lo;
-        const double ld = a.loads > 1 ? a.load_lo + (a.load_hi - a.load_lo) * j / (a.loads - 1) : a.load_hi;
-        grid.push_back({i, j, rpm, ld});
-      }
-    if (a.points > 0 && a.points < static_cast<int>(grid.size())) {
-      std::vector<Pt> sub;
-      for (int k = 0; k < a.points; ++k)
-        sub.push_back(grid[static_cast<std::size_t>(std::lround((grid.size() - 1.0) * k / std::max(1, a.points - 1)))]);
-      grid = sub;
-    }
+    const std::vector<Pt> grid = buildGrid(a);
     std::string cmd = "mkdir -p '" + a.out + "'";
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("cannot create " + a.out);
     std::ofstream csv(a.out + "/steady_points.csv");
-    csv << "speed_rpm,load,torque_req_Nm,torque_Nm,bsfc_g_kWh,bsfc_ref_g_kWh,bsfc_err_pct,"
-           "fuel_kg_s,fuel_ref_kg_s,air_kg_s,lambda,boost_Pa,boost_target_Pa,T_im_K,p3_Pa,T3_K,"
-           "pmax_bar,turbo_krpm,wastegate,nox_g_kWh,exhaust_T_K,back_pressure_Pa,smoke_limited,"
-           "converged,sim_s,cpu_s,imep_gross_bar,pmep_bar,fmep_bar,eta_ind_gross,ca50_deg,"
-           "ignition_delay_deg,ambient_T_K,in_region,region_note\n";
+    writeCsvHeader(csv);
     const BsfcValidationRegion region{p.engine.validation_min_speed_rpm, p.engine.validation_min_load};
     SteadyPointOptions opt;
     opt.max_time_s = a.max_time;
     opt.ambient_T_K = 273.15 + a.ambient_C;
-    int last_speed = -1, n_conv = 0, n_reg = 0;
-    double sum_abs = 0, max_abs = 0, cpu_all = 0, sim_all = 0, sum_reg = 0, max_reg = 0;
+    int last_speed = -1;
+    Totals tot;
     for (const Pt& q : grid) {
-      const double w = q.rpm * kRpm, treq = q.load * eng.fullLoadTorque(w);
+      const double w = hbt::units::rpmToRadps(q.rpm), treq = q.load * eng.fullLoadTorque(w);
       if (q.is != last_speed) eng.reset(w, treq, opt.ambient_T_K);
       last_speed = q.is;
-      const SteadyPointResult sp = runSteadyPoint(eng, q.rpm, treq, opt);
-      const Engine1DOutputs* o = &sp.mean;
-      const bool conv = sp.converged;
-      const double t = sp.sim_s, cpu = sp.cpu_s;
-      cpu_all += cpu;
-      sim_all += t;
-      const double Tb = o->brake_torque_Nm, fuel = o->fuel_mass_flow_kg_s;
-      const double fref = sp.fuel_ref_kg_s, bsfc = sp.bsfc_g_kWh, bref = sp.bsfc_ref_g_kWh;
-      const double err = sp.bsfc_err_pct;
-      std::string reason;
-      const bool in_region = region.contains(q.rpm, q.load, &reason);
-      n_conv += conv;
-      sum_abs += std::fabs(err);
-      max_abs = std::max(max_abs, std::fabs(err));
-      if (in_region) {
-        ++n_reg;
-        sum_reg += std::fabs(err);
-        max_reg = std::max(max_reg, std::fabs(err));
-      }
-      // Loss split and combustion phasing: mean over the cylinders' last complete cycles.
-      double imep_g = 0, pmep = 0, eta_g = 0, ca50 = 0, delay = 0;
-      const int ncyl = eng.assembly().cylinders();
-      for (int c = 0; c < ncyl; ++c) {
-        const auto& r = eng.assembly().cylinder(c).lastCycle();
-        imep_g += r.imep_gross_Pa / ncyl, pmep += r.pmep_Pa / ncyl, eta_g += r.eta_ind_gross / ncyl;
-        ca50 += r.ca50_deg / ncyl, delay += r.ignition_delay_main_deg / ncyl;
-      }
-      const double Vd_m3 = eng.assembly().displacement_m3();
-      const double fmep = o->friction_torque_Nm * 4.0 * M_PI / Vd_m3;
-      csv << q.rpm << "," << q.load << "," << treq << "," << Tb << "," << bsfc << "," << bref << ","
-          << err << "," << fuel << "," << fref << "," << o->air_mass_flow_kg_s << "," << o->lambda
-          << "," << o->boost_pressure_Pa << "," << o->boost_target_Pa << ","
-          << o->intake_manifold_T_K << "," << o->turbine_inlet_p_Pa << "," << o->turbine_inlet_T_K
-          << "," << o->peak_cylinder_pressure_Pa / 1e5 << "," << o->turbo_speed_rad_s / kRpm / 1e3
-          << "," << o->wastegate_opening << "," << o->nox_mass_flow_kg_s / (Tb * w) * 3.6e9 << ","
-          << o->exhaust_T_K << "," << o->back_pressure_Pa << "," << o->smoke_limited << ","
-          << conv << "," << t << "," << cpu << "," << imep_g / 1e5 << "," << pmep / 1e5 << ","
-          << fmep / 1e5 << "," << eta_g << "," << ca50 << "," << delay << "," << opt.ambient_T_K << "," << in_region
-          << ",\"" << reason << "\"\n";
-      csv.flush();
-      std::printf("%6.0f rpm %5.0f Nm (%3.0f%%): Tb %6.1f BSFC %6.1f ref %6.1f err %+5.1f%% lambda %4.2f "
-                  "boost %4.2f bar pmax %5.1f bar NOx %5.2f g/kWh %s %.1f s cpu %.2f s%s\n",
-                  q.rpm, treq, 100 * q.load, Tb, bsfc, bref, err, o->lambda, o->boost_pressure_Pa / 1e5,
-                  o->peak_cylinder_pressure_Pa / 1e5, o->nox_mass_flow_kg_s / (Tb * w) * 3.6e9,
-                  conv ? "conv" : "NOT-CONVERGED", t, cpu, in_region ? "" : " (outside region)");
-      std::fflush(stdout);
+      runPoint(eng, q, w, treq, opt, region, csv, tot);
     }
-    const int n = static_cast<int>(grid.size());
-    std::printf("\n%d points (%d converged), solver %s, ambient %.1f C: all points: BSFC error mean "
-                "|e| = %.2f %%, max |e| = %.2f %%; CPU %.1f s for %.1f s simulated (%.3f)\n",
-                n, n_conv, p.engine.solver.c_str(), a.ambient_C, sum_abs / n, max_abs, cpu_all,
-                sim_all, cpu_all / sim_all);
-    if (n_reg > 0)
-      std::printf("validation region (>= %.0f rpm, >= %.0f %% load; %d points): BSFC error mean |e| = "
-                  "%.2f %%, max |e| = %.2f %% (targets 3 %% / 8 %%)\n",
-                  region.min_speed_rpm, 100.0 * region.min_load, n_reg, sum_reg / n_reg, max_reg);
-    else
-      std::printf("validation region (>= %.0f rpm, >= %.0f %% load): no point of this grid\n",
-                  region.min_speed_rpm, 100.0 * region.min_load);
+    printSummary(a, p.engine.solver, static_cast<int>(grid.size()), tot, region);
     if (a.plot) {
       std::fflush(stdout);
       const std::string py = "/usr/bin/python3 '" + a.root + "/src/engine_1d/tools/plot_steady.py' '" +

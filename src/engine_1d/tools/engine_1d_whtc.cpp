@@ -24,14 +24,13 @@
 #include <string>
 #include <vector>
 
+#include "common/units.hpp"
 #include "engine_1d/engine_1d.hpp"
 #include "engine_1d/whtc.hpp"
 
 using namespace hbt::engine_1d;
 
 namespace {
-constexpr double kRpm = M_PI / 30.0;
-
 struct Args {
   double duration = 1800.0, dt = 0.01;
   std::string solver, out = "engine_1d_whtc_out", config = "config/engine_1d.yaml", root;
@@ -78,10 +77,10 @@ Result runCycle(const Args& a, const std::string& solver, const std::string& csv
   if (!solver.empty()) p.engine.solver = solver;
   Engine1D eng(p, a.root);
   const auto& ref = eng.reference();
-  auto fl = [&](double rpm) { return ref.fullLoadTorque(rpm * kRpm); };
-  auto mot = [&](double rpm) { return ref.motoringTorque(rpm * kRpm); };
+  auto fl = [&](double rpm) { return ref.fullLoadTorque(hbt::units::rpmToRadps(rpm)); };
+  auto mot = [&](double rpm) { return ref.motoringTorque(hbt::units::rpmToRadps(rpm)); };
   const double n_idle = 700.0 * ref.scaling().speed_factor;
-  const double n_max = ref.fullLoadCurve().speed_rad_s.back() / kRpm;
+  const double n_max = hbt::units::radpsToRpm(ref.fullLoadCurve().speed_rad_s.back());
   const GtrReferenceSpeeds s = gtrReferenceSpeeds(fl, n_idle, n_max);
   const auto cyc = denormaliseWhtc(a.root + "/config/data/cycles/WHTC_normalized_1Hz.csv", s, fl, mot);
   if (print)
@@ -102,7 +101,7 @@ Result runCycle(const Args& a, const std::string& solver, const std::string& csv
   };
   double n0, T0;
   at(0.0, n0, T0);
-  eng.reset(n0 * kRpm, T0, 298.15);
+  eng.reset(hbt::units::rpmToRadps(n0), T0, 298.15);
   Result r;
   std::vector<double> xr, yr, xn, yn, xp, yp, xq, yq;
   const double dur = std::min(a.duration, static_cast<double>(cyc.size() - 1));
@@ -115,7 +114,7 @@ Result runCycle(const Args& a, const std::string& solver, const std::string& csv
     const double t = k * a.dt;
     double n, T;
     at(t - 0.5 * a.dt, n, T);  // request over the step: mid-step reference
-    in.speed_rad_s = n * kRpm;
+    in.speed_rad_s = hbt::units::rpmToRadps(n);
     in.torque_request_Nm = T;
     const Engine1DOutputs& o = eng.step(a.dt, in);
     const double w = in.speed_rad_s;
@@ -134,13 +133,13 @@ Result runCycle(const Args& a, const std::string& solver, const std::string& csv
       at(t, nr, Tr);
       xr.push_back(Tr), yr.push_back(o.brake_torque_Nm);
       xn.push_back(nr), yn.push_back(n);
-      xp.push_back(Tr * nr * kRpm), yp.push_back(o.brake_torque_Nm * n * kRpm);
+      xp.push_back(Tr * nr * hbt::units::kRadps_per_rpm), yp.push_back(o.brake_torque_Nm * n * hbt::units::kRadps_per_rpm);
       if (Tr > 0.0) xq.push_back(Tr), yq.push_back(o.brake_torque_Nm);
-      csv << t << "," << nr << "," << Tr << "," << o.brake_torque_Nm << "," << Tr * nr * kRpm / 1e3
-          << "," << o.brake_torque_Nm * n * kRpm / 1e3 << "," << o.fuel_mass_flow_kg_s * 1e3 << ","
+      csv << t << "," << nr << "," << Tr << "," << o.brake_torque_Nm << "," << Tr * nr * hbt::units::kRadps_per_rpm / 1e3
+          << "," << o.brake_torque_Nm * n * hbt::units::kRadps_per_rpm / 1e3 << "," << o.fuel_mass_flow_kg_s * 1e3 << ","
           << o.fuel_mass_kg * 1e3 << "," << r.fuel_map_act * 1e3 << "," << r.fuel_map_ref * 1e3 << ","
           << o.boost_pressure_Pa / 1e5 << "," << o.boost_target_Pa / 1e5 << ","
-          << o.turbo_speed_rad_s / kRpm / 1e3 << "," << o.wastegate_opening << "," << o.lambda << ","
+          << hbt::units::radpsToRpm(o.turbo_speed_rad_s) / 1e3 << "," << o.wastegate_opening << "," << o.lambda << ","
           << o.nox_mass_kg * 1e3 << "," << o.exhaust_T_K << "," << o.exhaust_mass_flow_kg_s << ","
           << o.smoke_limited << "," << o.fuel_cut << "," << o.cpu_time_total_s << "\n";
       if (print && k % (per_s * 100) == 0) {
@@ -206,7 +205,7 @@ int main(int argc, char** argv) {
     hbt::engine_map::MapEngine ref(p.reference, a.root);
     double pw;
     const double pmax = ref.peakPower(&pw), tmax = ref.peakTorque();
-    const double nmax = ref.fullLoadCurve().speed_rad_s.back() / kRpm;
+    const double nmax = hbt::units::radpsToRpm(ref.fullLoadCurve().speed_rad_s.back());
     if (!a.bench) {
       const Result r = runCycle(a, a.solver, a.out + "/whtc_1hz.csv", true);
       report(r, tmax, nmax, pmax);

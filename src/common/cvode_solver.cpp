@@ -1,0 +1,96 @@
+#include "common/cvode_solver.hpp"
+
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <cstdlib>
+
+#include "common/errors.hpp"
+
+namespace hbt {
+namespace {
+// CVODE's name of a return flag ("CV_TOO_MUCH_WORK"), with the number.
+std::string flagName(int flag) {
+  char* name = CVodeGetReturnFlagName(flag);  // malloc'd by SUNDIALS
+  std::string s = name ? name : "unknown flag";
+  std::free(name);
+  return s + " (flag " + std::to_string(flag) + ")";
+}
+}  // namespace
+
+CvodeSolver::CvodeSolver(const std::string& owner, int neq, CVRhsFn rhs, void* user_data,
+                         double rtol, const std::vector<double>& atol, long max_steps,
+                         CVLsJacFn jac)
+    : owner_(owner), neq_(neq) {
+  if (neq <= 0 || static_cast<int>(atol.size()) != neq)
+    throw ModelDivergence(owner_, "CVODE", "need neq > 0 and one absolute tolerance per equation");
+  if (SUNContext_Create(nullptr, &ctx_) != 0)
+    throw ModelDivergence(owner_, "CVODE", "SUNContext_Create failed");
+  y_ = N_VNew_Serial(neq, ctx_);
+  atol_ = N_VNew_Serial(neq, ctx_);
+  mem_ = CVodeCreate(CV_BDF, ctx_);
+  A_ = SUNDenseMatrix(neq, neq, ctx_);
+  LS_ = y_ && A_ ? SUNLinSol_Dense(y_, A_, ctx_) : nullptr;
+  if (!y_ || !atol_ || !mem_ || !A_ || !LS_) {
+    const char* what = !y_ || !atol_ ? "N_VNew_Serial" : !mem_ ? "CVodeCreate" : !A_ ? "SUNDenseMatrix"
+                                                                                     : "SUNLinSol_Dense";
+    release();
+    throw ModelDivergence(owner_, "CVODE", std::string(what) + " failed (allocation of solver memory)");
+  }
+  double* y0 = N_VGetArrayPointer(y_);
+  double* a = N_VGetArrayPointer(atol_);
+  for (int i = 0; i < neq; ++i) {
+    y0[i] = 0.0;
+    a[i] = atol[i];
+  }
+  try {
+    check(CVodeInit(mem_, rhs, 0.0, y_), "CVodeInit");
+    check(CVodeSVtolerances(mem_, rtol, atol_), "CVodeSVtolerances");
+    check(CVodeSetLinearSolver(mem_, LS_, A_), "CVodeSetLinearSolver");
+    if (jac) check(CVodeSetJacFn(mem_, jac), "CVodeSetJacFn");
+    check(CVodeSetUserData(mem_, user_data), "CVodeSetUserData");
+    check(CVodeSetMaxNumSteps(mem_, max_steps), "CVodeSetMaxNumSteps");
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+CvodeSolver::~CvodeSolver() { release(); }
+
+void CvodeSolver::release() {
+  if (mem_) CVodeFree(&mem_);
+  if (LS_) SUNLinSolFree(LS_);
+  if (A_) SUNMatDestroy(A_);
+  if (y_) N_VDestroy(y_);
+  if (atol_) N_VDestroy(atol_);
+  if (ctx_) SUNContext_Free(&ctx_);
+  mem_ = nullptr;
+  LS_ = nullptr;
+  A_ = nullptr;
+  y_ = atol_ = nullptr;
+}
+
+double* CvodeSolver::y() { return N_VGetArrayPointer(y_); }
+double* CvodeSolver::atol() { return N_VGetArrayPointer(atol_); }
+
+void CvodeSolver::check(int flag, const char* call) const {
+  if (flag != CV_SUCCESS) throw ModelDivergence(owner_, "CVODE", std::string(call) + " failed: " + flagName(flag));
+}
+
+void CvodeSolver::reinit() { check(CVodeReInit(mem_, 0.0, y_), "CVodeReInit"); }
+void CvodeSolver::setStopTime(double t_stop) { check(CVodeSetStopTime(mem_, t_stop), "CVodeSetStopTime"); }
+void CvodeSolver::setTolerances(double rtol) { check(CVodeSVtolerances(mem_, rtol, atol_), "CVodeSVtolerances"); }
+void CvodeSolver::setInitialStep(double h0) { check(CVodeSetInitStep(mem_, h0), "CVodeSetInitStep"); }
+
+long CvodeSolver::advance(double t_out, const char* quantity) {
+  realtype t = 0.0;
+  const int flag = CVode(mem_, t_out, y_, &t, CV_NORMAL);
+  if (flag < 0) throw ModelDivergence(owner_, quantity, "CVODE failed: " + flagName(flag));
+  long nst = 0;
+  CVodeGetNumSteps(mem_, &nst);
+  return nst;
+}
+
+}  // namespace hbt

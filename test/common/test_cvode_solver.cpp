@@ -1,0 +1,71 @@
+// CvodeSolver: integrates a linear decay to CVODE's tolerance and names CVODE's flag and the
+// owner when the integration fails.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "common/cvode_solver.hpp"
+#include "common/errors.hpp"
+
+namespace {
+
+// dy/dt = -k y, k [1/s] in user data.
+int decay(realtype, N_Vector y, N_Vector yd, void* ud) {
+  const double k = *static_cast<const double*>(ud);
+  N_VGetArrayPointer(yd)[0] = -k * N_VGetArrayPointer(y)[0];
+  return 0;
+}
+
+int failingRhs(realtype, N_Vector, N_Vector, void*) { return -1; }  // unrecoverable
+
+std::string messageOf(hbt::CvodeSolver& s, double t_out) {
+  try {
+    s.advance(t_out, "test quantity");
+  } catch (const hbt::ModelDivergence& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(CvodeSolver, IntegratesAnExponentialDecay) {
+  double k = 2.0;
+  hbt::CvodeSolver s("decay", 1, &decay, &k, 1e-8, {1e-12}, 5000);
+  for (int restart = 0; restart < 2; ++restart) {
+    s.y()[0] = 1.0;
+    s.reinit();
+    s.setStopTime(0.5);
+    EXPECT_GT(s.advance(0.5, "y"), 0);
+    EXPECT_NEAR(s.y()[0], std::exp(-1.0), 1e-6);
+  }
+}
+
+TEST(CvodeSolver, FailuresNameOwnerQuantityAndFlag) {
+  double k = 2.0;
+  hbt::CvodeSolver few("decay", 1, &decay, &k, 1e-10, {1e-14}, 2);
+  few.y()[0] = 1.0;
+  few.reinit();
+  const std::string m = messageOf(few, 100.0);
+  EXPECT_NE(m.find("decay: test quantity: CVODE failed: CV_TOO_MUCH_WORK"), std::string::npos) << m;
+
+  hbt::CvodeSolver bad("bad rhs", 1, &failingRhs, nullptr, 1e-6, {1e-12}, 100);
+  bad.y()[0] = 1.0;
+  bad.reinit();
+  const std::string b = messageOf(bad, 1.0);
+  EXPECT_NE(b.find("bad rhs: test quantity: CVODE failed: CV_RHSFUNC_FAIL"), std::string::npos) << b;
+
+  try {
+    bad.setTolerances(-1.0);  // a negative relative tolerance: CVODE rejects it
+    ADD_FAILURE() << "no exception";
+  } catch (const hbt::ModelDivergence& e) {
+    EXPECT_NE(std::string(e.what()).find("bad rhs: CVODE: CVodeSVtolerances failed: CV_ILL_INPUT"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(CvodeSolver, RejectsAToleranceCountOtherThanTheEquations) {
+  double k = 1.0;
+  EXPECT_THROW(hbt::CvodeSolver("decay", 2, &decay, &k, 1e-6, {1e-12}, 100), hbt::ModelDivergence);
+}
