@@ -4,7 +4,8 @@ in `scripts/twin bench 1d`): the crank-angle 1D engine coupled to the vehicle th
 protocol. Checks: the run completes; every output is finite; the brake work the engine reports
 equals the work the vehicle's driveline received (1 %); the mean efficiency of the fuel is
 plausible; engine-out NOx is produced; the solver is selectable (fsm and tvd both run); the idle
-after the first bus stop (t = 51.5 s) settles (issue 8: it oscillated for ~4 s); nodes and
+after the first bus stop (t = 51.5 s) settles (within 1 s, not the ~4 s oscillation of a trim
+that integrates the engine's response time); nodes and
 nodelets give the same bag."""
 import math
 import os
@@ -149,8 +150,8 @@ class Engine1DLoops(unittest.TestCase):
         a, b = self.last("base", "/engine/state"), self.last("soot", "/engine/state")
         self.assertGreater(b.back_pressure_pa, a.back_pressure_pa + 300.0)
         # fuel per positive brake work (the pumping loss): measured +0.11 %. Fuel over the fixed
-        # 20 s also depends on the work delivered, which the 1D torque trim now gives after the
-        # engine's response time instead of with an overshoot (issue 8): -0.03 % there.
+        # 20 s also depends on the work delivered, which the 1D torque trim gives after the
+        # engine's response time, without an overshoot: -0.03 % there.
         ratio = (b.fuel_mass_kg / b.positive_work_j) / (a.fuel_mass_kg / a.positive_work_j)
         self.assertGreater(ratio, 1.0004)
 

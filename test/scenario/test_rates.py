@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""Multi-rate stepping moves the results by less than 0.2 % (issue 9, item 1): baseline_urban
+"""Multi-rate stepping moves the results by less than 0.2 %: baseline_urban
 (map engine, nodelets) for the first 300 s with the documented rates (cooling and aftertreatment
 nodes every 0.1 s, fed the means of their 10 ms producers from cumulative totals) against
 everything at the 10 ms base step (a config copy). Compared: fuel, and the temperature rise above ambient of the HT
 coolant, the engine metal and the SCR brick at the end, and the SCR brick's time mean rise.
-The full mission: scripts/twin bench rates."""
+The full mission: scripts/twin bench rates (docs/bench/rates_<engine>.md)."""
 import os
 import tempfile
 import unittest

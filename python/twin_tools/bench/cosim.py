@@ -4,10 +4,10 @@ N probe participants (src/cosim/probe_participant.hpp: no model; each reads the 
 output, the first reads the last: a ring) under the master stepper, without recorder, in a
 generated launch file, for N = 3, 5, 8, as nodes (one process each, TCP) and as nodelets (one
 manager, one lock-step thread), in three variants:
-  jacobi      one group, everyone at the base step (each base step: one command, N statuses)
+  jacobi      one group, everyone at the base step (each reads the others' previous step)
   multirate   one group, every second probe at 10 base steps (cosim/macro_step_s = 10 dt)
   ordered     N groups [[p0], [p1], ...]: each probe reads its predecessor's fresh output, so
-              each base step is N commands and N statuses in sequence (the longest chain)
+              within a base step they step one after the other (the longest chain)
 Measured: base steps per second of simulated stepping (the stepper's status.json: steps /
 wall_time_s, START to the end) and the participants' compute time (steady clock inside their steps). The full missions are `twin bench map`
 (baseline, nodes and nodelets) and `twin bench hybrid`.
