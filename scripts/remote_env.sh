@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # roslaunch env-loader for participants started on another host (launch argument remote:=...,
-# README "Multi-host runs"). roslaunch runs `remote_env.sh roslaunch -c ...` over SSH with
+# docs/multihost.md). roslaunch runs `remote_env.sh roslaunch -c ...` over SSH with
 # ROS_MASTER_URI set to the master of the run; this script gives that command the ROS
 # environment of this checkout (build/devel/setup.bash beside it: the same checkout path and
 # ../shared on every host) and, unless ROS_IP or ROS_HOSTNAME is already set, the address other

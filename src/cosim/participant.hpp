@@ -47,7 +47,7 @@
 // Any exception thrown by the model is reported as ERROR with the participant's name and the
 // message; the stepper then aborts the run.
 //
-// Diagnostics (README "Diagnostics"; ROS-free part core/diagnostics.hpp): every participant
+// Diagnostics (docs/diagnostics.md; ROS-free part core/diagnostics.hpp): every participant
 // publishes a diagnostic_msgs/DiagnosticArray with one DiagnosticStatus (name = participant name,
 // hardware_id = host) on /diagnostics at the first state at or after every `period_s` of
 // simulated time and a final one at close() (key final = true): the wall compute time of its

@@ -9,7 +9,7 @@
 //            dead angle torque_dead_angle_deg, then the one-cycle mean like T_b), so the PI trims
 //            the feed-forward's steady error (1D engine vs reference map) and not the response
 //            time of the engine: with the error T_req' - T_b it integrated the ~0.13 s (700 rpm)
-//            lag of every request change and overshot by ~40 % of a step (README "Torque control")
+//            lag of every request change and overshot by ~40 % of a step (engine_1d README "Torque control")
 //   m_smoke = m_air,cyc / (lambda_smoke AFR_st)             smoke limiter on the cycle-mean air
 //            flow per cylinder-cycle m_air,cyc = mdot_air / (z w/(4 pi))
 //   fuel cut (m_f = 0, integrator cleared) if fuel is disabled or T_req <= T_mot.

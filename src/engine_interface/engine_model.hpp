@@ -68,7 +68,7 @@ struct EngineOutputs {
   double friction_correction_Nm = 0, pumping_correction_Nm = 0;  // map: cold oil, back-pressure
 };
 
-/// One key/value of the engine's diagnostics (README "Diagnostics"); the participant formats it
+/// One key/value of the engine's diagnostics (docs/diagnostics.md); the participant formats it
 /// like every other participant's (a number %.6g, a count as an integer, a flag true/false).
 struct EngineDiagnosticValue {
   enum class Kind { kNumber, kCount, kFlag };
@@ -120,7 +120,7 @@ class EngineModel {
   /// The inputs of the last step (after the fallbacks above; reset(): the start state).
   const EngineInputs& inputs() const { return in_; }
 
-  // --- diagnostics: the warning boost_limited (README "Diagnostics") and key/values ---
+  // --- diagnostics: the warning boost_limited (docs/diagnostics.md) and key/values ---
   /// The model's "too little boost air" condition of the last step: map = the request above the
   /// PT1 (turbo build-up) dynamic full load by more than margin_Nm while that limit is itself
   /// margin_Nm below the static full load; 1D = the smoke limiter (minimum λ) holds the fuel.

@@ -1,4 +1,4 @@
-// Idle after a bus stop (issue 8): the vehicle's idle governor (config/vehicle.yaml driver/idle_*)
+// Idle after a bus stop: the vehicle's idle governor (config/vehicle.yaml driver/idle_*)
 // coupled with each engine model through the twin's engine interface (engine_interface/engine_model.hpp)
 // at the 10 ms exchange, each side receiving the other's outputs of the previous exchange as in
 // the co-simulation (Jacobi). Vehicle and auxiliaries from config/vehicle.yaml and
@@ -9,12 +9,9 @@
 // neutral shift then drops the load to aux + spin loss (~91 Nm) and the crank speed by ~40 rpm
 // (the turbine joins the crank). Idle settling time = from that shift until the engine speed stays
 // within ±10 rpm of idle and the brake torque within ±10 Nm of its mean over the last second in
-// neutral. Measured (this test's printout): map 0.49 s before the fix (main 9abbfa0), 0.48 s
-// after; 1D 4.98 s (661-725 rpm, -41..265 Nm: the fuel trim integrated the engine's response
-// time and the governor's PI had ~20 deg of phase margin with the 1D engine's ~0.13 s response)
-// -> 0.52 s (659-717 rpm, >= 46 Nm). Start-off speed RMSE: map 0.40, 1D 0.37 -> 0.51 km/h (the
-// old trim's windup delivered more torque than requested at each launch; README "Idle after a
-// stop").
+// neutral. Measured (this test's printout): map 0.48 s, 1D 0.52 s (659-717 rpm, >= 46 Nm); a
+// fuel trim that integrates the engine's own response time (~0.13 s for the 1D engine) settles
+// in about 5 s instead. Start-off speed RMSE: map 0.40, 1D 0.51 km/h (docs/validation.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>

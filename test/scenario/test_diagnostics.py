@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Scenario test of the participants' /diagnostics (README "Diagnostics"): baseline_urban at
+"""Scenario test of the participants' /diagnostics (docs/diagnostics.md): baseline_urban at
 0 degC for 60 s, in nodelets and in nodes mode, with config/aftertreatment.yaml's light-off grace
 (its diagnostics: section) cut to 30 s so that the cold SCR raises ats_below_light_off. Every participant's statuses are in
 diagnostics.bag (one at every simulated second and a final one) with its host, step counts and

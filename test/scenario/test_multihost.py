@@ -182,7 +182,7 @@ class MultiHost(unittest.TestCase):
         """twin's default ROS_IP=127.0.0.1: the master, roslaunch's server and every node's
         TCPROS data server listen on loopback only; roscpp's XML-RPC slave server binds all
         interfaces whatever ROS_IP says (xmlrpcpp has no bind address) -- at most one per node,
-        and it is advertised to the master as 127.0.0.1 (README "Multi-host runs")."""
+        and it is advertised to the master as 127.0.0.1 (docs/multihost.md)."""
         by_comm = {}
         for p in self.procs_one:
             by_comm.setdefault(p["comm"], []).append(p)

@@ -1,4 +1,4 @@
-"""The participants' diagnostics of a run (README "Diagnostics"): read from diagnostics.bag beside
+"""The participants' diagnostics of a run (docs/diagnostics.md): read from diagnostics.bag beside
 the run's bag (the recorder writes every /diagnostics message there, never into run.bag).
 
 Each participant's last status -- its final one (key final = true), published at the end of the

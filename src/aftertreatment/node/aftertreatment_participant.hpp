@@ -16,7 +16,7 @@
 // ambient pressure.
 // Time stepping: one model step per macro step P, fed the exact means of the 10 ms producers over
 // the last P from their cumulative totals (../step_inputs.hpp).
-// Diagnostics (README "Diagnostics"): warning ats_below_light_off (the SCR not lit off --
+// Diagnostics (docs/diagnostics.md): warning ats_below_light_off (the SCR not lit off --
 // AftertreatmentState.light_off false -- for diagnostics/light_off_grace_s of config/aftertreatment.yaml
 // without a break); key/values the CVODE steps of the SCR storage (in the window and in
 // all), brick temperatures, conversion.

@@ -16,7 +16,7 @@
 // Parameters: private namespace = config/battery.yaml (cell/table_file resolved against the
 // package root, cosim::resolvePackagePath); /scenario/ambient_temperature_c = the air around the
 // pack, constant (initial state: cells at ambient, cold start; SOC = pack/initial_soc).
-// Diagnostics (README "Diagnostics"): warning battery_limited (request_limited for
+// Diagnostics (docs/diagnostics.md): warning battery_limited (request_limited for
 // diagnostics/duration_s of config/battery.yaml); key/values SOC, cell temperature, power limits,
 // time limited.
 #pragma once

@@ -12,7 +12,7 @@
 // state: everything at ambient, cold start); /scenario/ambient_pressure_pa (default the standard atmosphere).
 // Hybrid (the emachine participant runs): /emachine/state lt_heat_w (e-machine housing +
 // inverter heat into the LT coolant) feeds the LT circuit; baseline: 0 W (the circuit idles).
-// Diagnostics (README "Diagnostics"): warning coolant_overheat (HT coolant above diagnostics/overheat_c
+// Diagnostics (docs/diagnostics.md): warning coolant_overheat (HT coolant above diagnostics/overheat_c
 // until below diagnostics/overheat_release_c, for diagnostics/duration_s of config/cooling.yaml);
 // key/values coolant temperatures, thermostat opening, fan engagement and power.
 #pragma once

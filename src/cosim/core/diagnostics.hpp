@@ -1,7 +1,7 @@
 // Diagnostics of one lock-step participant as plain C++ (no ROS): the statistics of its step
 // compute time, its named warnings and the cadence of its statuses. The ROS base class
 // cosim::Participant (../participant.hpp) owns one, feeds it and publishes each Status as a
-// diagnostic_msgs/DiagnosticStatus on /diagnostics (README "Diagnostics").
+// diagnostic_msgs/DiagnosticStatus on /diagnostics (docs/diagnostics.md).
 //
 // Warnings are judged from the model state only (never from wall time), at the stamp of every
 // state the participant publishes, so they are the same in every run of a scenario:

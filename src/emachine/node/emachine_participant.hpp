@@ -12,7 +12,7 @@
 // Parameters: private namespace = config/emachine.yaml (data/vemp_file relative to the package,
 // /scenario/package_dir); /scenario/ambient_temperature_c (initial state: every node at ambient,
 // cold start; coolant without a cooling participant).
-// Diagnostics (README "Diagnostics"): warning emachine_derating (derating_factor below
+// Diagnostics (docs/diagnostics.md): warning emachine_derating (derating_factor below
 // diagnostics/derating_factor_below for diagnostics/duration_s of config/emachine.yaml); key/values
 // derating factor, live limits, winding/magnet temperatures.
 #pragma once

@@ -12,7 +12,7 @@
 // Parameters: private namespace = config/ems.yaml; the map engine YAML of the scenario's config
 //         folder (cosim::scenarioConfigFile); /scenario/engine_model (stop-start with the map
 //         engine only: the 1D engine cannot be stopped and cranked).
-// Diagnostics (README "Diagnostics"): no warnings of its own (the limits it meets are the
+// Diagnostics (docs/diagnostics.md): no warnings of its own (the limits it meets are the
 // e-machine's and the battery's); key/values mode, reason, equivalence factor, stops/starts.
 #pragma once
 #include "common/units.hpp"

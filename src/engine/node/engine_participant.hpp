@@ -19,7 +19,7 @@
 // Initial state: the model's reset() at its idle speed (engine_map.yaml idle_speed_rad_s), torque
 // 0, the scenario ambient temperature and the standard atmosphere (units::kStandardAtmosphere_Pa);
 // a command without an ambient pressure (<= 0) means the standard atmosphere as well.
-// Diagnostics (README "Diagnostics"): warning boost_limited (EngineModel::boostLimited: map = the
+// Diagnostics (docs/diagnostics.md): warning boost_limited (EngineModel::boostLimited: map = the
 // request above the PT1 dynamic full load, the turbo's build-up, by more than diagnostics/margin_nm
 // while that limit is itself below the static full load; 1D = the smoke limiter -- minimum
 // lambda -- holds the fuel; for diagnostics/duration_s of the model's YAML, ../engine_warnings.hpp); key/values model,

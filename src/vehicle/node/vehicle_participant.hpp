@@ -20,7 +20,7 @@
 // /scenario/{ambient_temperature_c, payload_kg, cycle_file, out_dir, package_dir}.
 // Side outputs at start-up: <out_dir>/profile.csv (time-based target profile) and
 // <out_dir>/stops.csv (stop positions and times); the mission duration in its ANNOUNCE.
-// Diagnostics (README "Diagnostics"): warning driver_not_tracking (|target - actual speed| beyond
+// Diagnostics (docs/diagnostics.md): warning driver_not_tracking (|target - actual speed| beyond
 // the diagnostics/ thresholds of config/vehicle.yaml, ../vehicle_warnings.hpp, while the pedal that would close the gap is not saturated);
 // key/values speed, target, error, gear, pedals, distance.
 #pragma once
