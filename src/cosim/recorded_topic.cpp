@@ -1,23 +1,12 @@
 #include "cosim/recorded_topic.hpp"
 
-#include <hybrid_bus_twin/AftertreatmentState.h>
-#include <hybrid_bus_twin/BatteryState.h>
-#include <hybrid_bus_twin/CoolingState.h>
-#include <hybrid_bus_twin/DriverDemand.h>
-#include <hybrid_bus_twin/EMachineState.h>
-#include <hybrid_bus_twin/EmsCommand.h>
-#include <hybrid_bus_twin/EngineCommand.h>
-#include <hybrid_bus_twin/EngineHeat.h>
-#include <hybrid_bus_twin/EngineState.h>
-#include <hybrid_bus_twin/ExhaustState.h>
-#include <hybrid_bus_twin/ProbeSignal.h>
-#include <hybrid_bus_twin/VehicleState.h>
-#include <hybrid_bus_twin/VehicleToCooling.h>
 #include <topic_tools/shape_shifter.h>
 
 #include <cstring>
 #include <map>
 #include <vector>
+
+#include "recorded_types.inc"  // generated from msg/ (src/cosim/CMakeLists.txt)
 
 namespace hbt::cosim {
 namespace {
@@ -107,19 +96,9 @@ std::unique_ptr<RecordedTopic> makeRecordedTopic(const std::string& datatype, ro
   using Maker = std::unique_ptr<RecordedTopic> (*)(ros::NodeHandle&, const std::string&, std::function<void()>,
                                                    const std::string&, std::unique_ptr<InputBase>&);
   static const std::map<std::string, Maker> makers = {
-      {ros::message_traits::datatype<m::AftertreatmentState>(), &typed<m::AftertreatmentState>},
-      {ros::message_traits::datatype<m::BatteryState>(), &typed<m::BatteryState>},
-      {ros::message_traits::datatype<m::CoolingState>(), &typed<m::CoolingState>},
-      {ros::message_traits::datatype<m::DriverDemand>(), &typed<m::DriverDemand>},
-      {ros::message_traits::datatype<m::EMachineState>(), &typed<m::EMachineState>},
-      {ros::message_traits::datatype<m::EmsCommand>(), &typed<m::EmsCommand>},
-      {ros::message_traits::datatype<m::EngineCommand>(), &typed<m::EngineCommand>},
-      {ros::message_traits::datatype<m::EngineHeat>(), &typed<m::EngineHeat>},
-      {ros::message_traits::datatype<m::EngineState>(), &typed<m::EngineState>},
-      {ros::message_traits::datatype<m::ExhaustState>(), &typed<m::ExhaustState>},
-      {ros::message_traits::datatype<m::ProbeSignal>(), &typed<m::ProbeSignal>},
-      {ros::message_traits::datatype<m::VehicleState>(), &typed<m::VehicleState>},
-      {ros::message_traits::datatype<m::VehicleToCooling>(), &typed<m::VehicleToCooling>},
+#define HBT_RECORDED_TYPE(M) {ros::message_traits::datatype<m::M>(), &typed<m::M>},
+      HBT_RECORDED_TYPES(HBT_RECORDED_TYPE)
+#undef HBT_RECORDED_TYPE
   };
   const auto it = makers.find(datatype);
   if (it != makers.end()) return it->second(nh, topic, std::move(cb), subscribe_to, input_out);
