@@ -56,6 +56,12 @@ ParamSource parseYamlParams(const std::string& text, const std::string& file_nam
   return src;
 }
 
+void applyParamFile(const ParamSet& ps, const std::string& path) {
+  const ParamSource src = readYamlParams(path);
+  applyParams(ps, src);
+  requireKeys(ps, src);  // after: a misspelt key is named as unknown first
+}
+
 ParamSource readYamlParams(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path, "(file)", "cannot open file (missing or unreadable)");

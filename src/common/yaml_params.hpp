@@ -15,4 +15,9 @@ ParamSource readYamlParams(const std::string& path);
 /// Same, from text; `file_name` is used in error messages.
 ParamSource parseYamlParams(const std::string& text, const std::string& file_name);
 
+/// Reads `path` into the fields `ps` declares: applyParams (an unknown key, a bad value is named
+/// first), then requireKeys (every declared key is in the file but an intended default). The one
+/// call for a file read on its own; throws InputError naming `path` and the key.
+void applyParamFile(const ParamSet& ps, const std::string& path);
+
 }  // namespace hbt

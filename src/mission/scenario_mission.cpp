@@ -18,9 +18,7 @@ MissionProfile buildScenarioMission(const ScenarioMission& s) {
   MissionParams mp;
   ParamSet ps;
   mp.declare(ps);
-  const ParamSource file = readYamlParams(s.mission_file);
-  applyParams(ps, file);
-  requireKeys(ps, file);  // after: a misspelt key is named as unknown first
+  applyParamFile(ps, s.mission_file);
   if (!s.cycle_file.empty()) mp.cycle_file = s.cycle_file;
   mp.cycle_file = underPackage(s.package_dir, mp.cycle_file);
   mp.accel_limits_file = underPackage(s.package_dir, mp.accel_limits_file);

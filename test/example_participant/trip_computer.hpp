@@ -14,7 +14,7 @@ namespace hbt::example {
 
 struct TripComputerParams {
   double min_distance_m = 1000.0;        ///< consumption shown from this distance on [m]
-  double standstill_speed_m_s = 0.01;    ///< below this the bus stands [m/s]
+  double standstill_speed_m_s = 0.5 / 3.6;  ///< below this the bus stands [m/s] (0.5 km/h)
   void declare(ParamSet& ps);
 };
 

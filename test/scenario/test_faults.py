@@ -32,16 +32,7 @@ def inject(tmp, name, sig, after_s=20.0):
     proc = run_util.start_launch(LAUNCH, out, until=0, mode="nodes", timeout=TIMEOUT_S)
     try:
         pid = run_util.pid_of_node(proc, name)
-        log = os.path.join(out, "roslaunch.log")
-        t0 = time.time()
-        while time.time() - t0 < 60.0:  # stepping: the progress line is past 20 s of simulated time
-            text = ""
-            if os.path.exists(log):
-                with open(log, errors="replace") as f:
-                    text = f.read()
-            if any(float(t) > after_s for t in lost_status.PROGRESS.findall(text)):
-                break
-            time.sleep(0.1)
+        run_util.wait_until_stepping(out, proc, after_s)
         t_sig = time.time()
         os.kill(pid, sig)
         path = os.path.join(out, "status.json")

@@ -19,23 +19,6 @@ from twin_tools.paths import REPO
 TWIN = os.path.join(REPO, "scripts", "twin")
 
 
-def wait_until_stepping(out, proc, timeout_s=120.0):
-    """Until the stepper's progress line shows simulated time past 50 s (the run is stepping)."""
-    log = os.path.join(out, "roslaunch.log")
-    t0 = time.time()
-    while time.time() - t0 < timeout_s:
-        if proc.poll() is not None:
-            raise AssertionError("twin ended before it was interrupted (rc %s)" % proc.returncode)
-        if os.path.exists(log):
-            with open(log, errors="replace") as f:
-                text = f.read()
-            marks = [float(x.split()[0]) for x in text.split("t = ")[1:] if x.split() and x.split()[0].replace(".", "").isdigit()]
-            if marks and max(marks) > 50.0:
-                return
-        time.sleep(0.2)
-    raise AssertionError("the run did not start stepping within %.0f s" % timeout_s)
-
-
 class Interrupted(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -49,7 +32,7 @@ class Interrupted(unittest.TestCase):
             proc = subprocess.Popen([TWIN, "run", scenario, "--out", out] + args, env=env,
                                     stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True)
             try:
-                wait_until_stepping(out, proc)
+                run_util.wait_until_stepping(out, proc, after_s=50.0)
                 t0 = time.time()
                 if how == "group SIGINT":
                     os.killpg(proc.pid, signal.SIGINT)  # what Ctrl-C in a terminal does

@@ -65,6 +65,23 @@ def run_launch(launch_file, out_dir, timeout_s=300, **args):
     return st
 
 
+def wait_until_stepping(out_dir, proc, after_s, timeout_s=120.0):
+    """Until the stepper's progress line in out_dir/roslaunch.log is past after_s of simulated
+    time (the run is stepping); AssertionError if `proc` ends first or the timeout passes."""
+    from twin_tools.launch.lost_status import PROGRESS
+    log = os.path.join(out_dir, "roslaunch.log")
+    t0 = time.time()
+    while time.time() - t0 < timeout_s:
+        if proc.poll() is not None:
+            raise AssertionError("the run ended (rc %s) before it stepped past %.0f s" % (proc.returncode, after_s))
+        if os.path.exists(log):
+            with open(log, errors="replace") as f:
+                if any(float(t) > after_s for t in PROGRESS.findall(f.read())):
+                    return
+        time.sleep(0.1)
+    raise AssertionError("the run did not step past %.0f s within %.0f s" % (after_s, timeout_s))
+
+
 def read_status(out_dir):
     with open(os.path.join(out_dir, "status.json")) as f:
         return json.load(f)

@@ -24,12 +24,10 @@ void EmsParticipant::configure() {
   engine_map::MapEngineParams mp;
   ParamSet mps;
   mp.declare(mps);
-  const ParamSource engine = readYamlParams(engine_file);
-  applyParams(mps, engine);
-  requireKeys(mps, engine);  // after: a misspelt key is named as unknown first
+  applyParamFile(mps, engine_file);
   fuel_ = std::make_unique<MapFuelModel>(std::make_unique<engine_map::MapEngine>(mp, pkg));
-  // stop-start needs an engine that can be stopped and cranked: the map engine (the 1D engine
-  // runs on, at idle, whenever the EMS would stop it)
+  // stop-start needs an engine that can be stopped and cranked: the map engine (with the 1D
+  // engine the EMS keeps it running and publishes the reason StopStartDisabled)
   const bool supported = cosim::scenarioEngineModel(nh_) == "map";
   model_ = std::make_unique<EmsModel>(p, *fuel_, supported);
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);

@@ -40,9 +40,7 @@ void VehicleParticipant::readSet(const std::string& file, const std::string& pre
   ParamSet ps;
   ps.setPrefix(prefix);
   declare(ps);
-  const ParamSource src = readYamlParams(file);
-  applyParams(ps, src);
-  requireKeys(ps, src);  // after: a misspelt key is named as unknown first
+  applyParamFile(ps, file);
 }
 
 void VehicleParticipant::readScenarioSets(VehicleParams& p) {
@@ -62,9 +60,7 @@ void VehicleParticipant::addEMachineInertia(VehicleParams& p) {
   emachine::EMachineParams ep;
   ParamSet eps;
   ep.declare(eps);
-  const ParamSource em = readYamlParams(file);
-  applyParams(eps, em);
-  requireKeys(eps, em);  // after: a misspelt key is named as unknown first
+  applyParamFile(eps, file);
   p.driveline.engine_inertia_kg_m2 += ep.data.crankInertia_kgm2();
 }
 
