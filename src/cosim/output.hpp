@@ -10,6 +10,8 @@
 // the state at t_end, so a 10 ms topic read by another participant at every step no longer
 // reaches the recorder at every step too (mode:=nodes: a TCP delivery each).
 //
+// Every floating-point field must be finite (finite_check.hpp): a NaN or inf fails the step.
+//
 // Publish a boost::shared_ptr (boost::make_shared<M>(msg)), not the message by value: roscpp
 // then hands intra-process subscribers (nodelets) the same object without serialising it and
 // skips its poll-thread wake-up (a pipe write + thread switch per publish).
@@ -20,6 +22,7 @@
 #include <string>
 
 #include "cosim/core/participant_core.hpp"
+#include "cosim/finite_check.hpp"
 
 namespace hbt::cosim {
 
@@ -32,8 +35,12 @@ class Output {
   Output(ros::Publisher pub, ros::Publisher lane, core::ParticipantCore* core, std::size_t index)
       : pub_(std::move(pub)), lane_(std::move(lane)), core_(core), index_(index) {}
 
+  /// Throws ModelDivergence (topic, field, value, stamp) if a floating-point field of `m` is not
+  /// finite (finite_check.hpp): the step fails and the run stops there.
   template <class M>
   void publish(const boost::shared_ptr<M>& m) const {
+    const std::string bad = nonFiniteField(*m);
+    if (!bad.empty()) throwNotFinite(bad, m->header.stamp.toSec());
     const ros::Publisher& p = pub_;
     const ros::Publisher& l = lane_;
     core_->publish(index_, static_cast<core::Nanos>(m->header.stamp.toNSec()), [p, m] { p.publish(m); },
@@ -47,6 +54,7 @@ class Output {
   explicit operator bool() const { return core_ != nullptr; }
 
  private:
+  [[noreturn]] void throwNotFinite(const std::string& field_value, double stamp_s) const;
   ros::Publisher pub_, lane_;
   core::ParticipantCore* core_ = nullptr;
   std::size_t index_ = 0;

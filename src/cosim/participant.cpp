@@ -93,6 +93,7 @@ class Participant::Hooks : public core::ParticipantHooks {
   }
   bool readyToClose(core::Nanos t) const override { return p_.readyToClose(fromNanos(t)); }
   void logError(const std::string& m) override { ROS_ERROR_STREAM(m); }
+  void stepperLost(core::Nanos t, const std::string& message) override { p_.stepperLost(fromNanos(t), message); }
   std::string missingLinks() const override {
     std::ostringstream os;
     for (const auto& in : p_.inputs_)
@@ -259,12 +260,12 @@ void Participant::start() {
   cmd_sub_ = nh_.subscribe<StepCommand>("/sim/step", 100, &Participant::onCommand, this,
                                         ros::TransportHints().tcpNoDelay());
   core_.start();
-  announce_timer_ = nh_.createWallTimer(ros::WallDuration(0.1), &Participant::onAnnounceTimer, this);
+  tick_timer_ = nh_.createWallTimer(ros::WallDuration(0.1), &Participant::onTickTimer, this);
 }
 
-void Participant::onAnnounceTimer(const ros::WallTimerEvent&) {
+void Participant::onTickTimer(const ros::WallTimerEvent&) {
   std::lock_guard<std::recursive_mutex> lock(mutex_);
-  if (!core_.onAnnounceTick()) announce_timer_.stop();
+  if (!core_.onTick()) tick_timer_.stop();
 }
 
 void Participant::onArrival() {

@@ -110,6 +110,9 @@ class Participant {
   /// At FINISH, close() is delayed until this returns true (e.g. the recorder waits for the
   /// outputs held at t_end); ABORT closes at once.
   virtual bool readyToClose(const ros::Time& t_end) const { return true; }
+  /// The stepper fell silent while stepping (died or hung: core/protocol.hpp); close(t, true) has
+  /// run. `message` says how long it was silent and at which t this participant closed.
+  virtual void stepperLost(const ros::Time& t, const std::string& message) {}
   /// At each SYNC before step 0: every output topic of the run (all participants announced).
   /// An observer may add inputs here (the recorder without a topic list records them all).
   virtual void topicsAnnounced(const std::vector<std::string>& topics,
@@ -194,7 +197,7 @@ class Participant {
  private:
   class Hooks;
   void onCommand(const hybrid_bus_twin::StepCommand::ConstPtr& cmd);
-  void onAnnounceTimer(const ros::WallTimerEvent&);
+  void onTickTimer(const ros::WallTimerEvent&);
   void onArrival();
   void readMacroStep();
   /// <out_dir>/resolved_config/<name>.csv: every parameter its configure() bound (file, key,
@@ -215,7 +218,7 @@ class Participant {
   core::Diagnostics diag_;
   diagnostic_msgs::DiagnosticArray final_diag_;
   std::string host_;
-  ros::WallTimer announce_timer_;
+  ros::WallTimer tick_timer_;
   std::recursive_mutex mutex_;
 };
 

@@ -1,21 +1,30 @@
 #include "cosim/recorder.hpp"
 
 #include <algorithm>
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 #include <ros/master.h>
 #include <ros/names.h>
 
 #include "common/errors.hpp"
+#include "cosim/core/process_cpu.hpp"
+#include "cosim/core/status_file.hpp"
+#include "cosim/stepper.hpp"
 
 namespace hbt::cosim {
 
 void Recorder::configure() {
-  std::string bag_file;
+  std::string& bag_file = bag_file_;
   const std::string where = "recorder parameters (launch file)";
   if (!pnh_.getParam("bag_file", bag_file) || bag_file.empty())
     throw InputError(where, "bag_file", "missing");
+  pnh_.param<std::string>("status_file", status_file_, "");
   record_all_ = !pnh_.hasParam("topics");
   if (!record_all_ && (!pnh_.getParam("topics", listed_) || listed_.empty()))
     throw InputError(where, "topics", "not a list of topic names, or empty (leave it out to record every output)");
@@ -177,6 +186,39 @@ void Recorder::close(const ros::Time& t_end, bool aborted) {
   }
   if (!run_bag_error.empty()) throw std::runtime_error(run_bag_error);
   if (!diag_error_.empty()) throw std::runtime_error(diag_error_);
+}
+
+void Recorder::stepperLost(const ros::Time& t, const std::string& message) {
+  std::string stepper;
+  ros::param::get(kStepperProcessParam, stepper);
+  const std::string text = "stepper (" + (stepper.empty() ? std::string("process unknown") : stepper) +
+                           "): " + message + "; the recorder closed " + bag_file_ +
+                           " there and ends the stepper's process";
+  ROS_ERROR_STREAM(name() << ": " << text);
+  if (!status_file_.empty() && !core::statusWritten(status_file_)) {
+    core::RunStatus st;
+    st.status = "error";
+    st.message = text;
+    st.sim_time_s = t.toSec();
+    const std::string failure = core::writeStatusFile(status_file_, st);
+    if (!failure.empty()) ROS_ERROR_STREAM(name() << ": cannot write " << status_file_ << ": " << failure);
+  }
+  ROS_ERROR_STREAM(name() << ": " << endStepper());
+}
+
+std::string Recorder::endStepper() const {
+  std::string stepper;
+  if (!ros::param::get(kStepperProcessParam, stepper))
+    return "the stepper's process is unknown (" + std::string(kStepperProcessParam) + " not set): end the launch by hand";
+  const std::string self = core::processName();
+  const auto host_of = [](const std::string& p) { return p.substr(0, p.rfind(':')); };
+  if (host_of(stepper) != host_of(self))
+    return "the stepper (" + stepper + ") runs on another host: end the launch by hand";
+  const long pid = std::strtol(stepper.substr(stepper.rfind(':') + 1).c_str(), nullptr, 10);
+  if (pid <= 0 || pid == static_cast<long>(::getpid())) return "the stepper shares this process: not ended";
+  if (::kill(static_cast<pid_t>(pid), SIGKILL) != 0)
+    return "could not end the stepper (pid " + std::to_string(pid) + "): " + std::strerror(errno);
+  return "ended the stepper (pid " + std::to_string(pid) + ", SIGKILL) so that the launch stops";
 }
 
 }  // namespace hbt::cosim

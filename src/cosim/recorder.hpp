@@ -28,6 +28,12 @@
 // each carries the warnings of the whole run --
 // or after diagnostics_wait_s [s wall, default 2] (a warning names the missing ones); its own
 // final status it writes itself. At ABORT it closes at once with what it has.
+//
+// A stepper that fell silent while stepping (died or hung: core/protocol.hpp): the recorder
+// closes its bags as at an ABORT, writes the run's status (private status_file [path], the
+// stepper's; only if the stepper has not written it) naming the stepper and the time, then ends
+// the stepper's process (SIGKILL, when it runs on this host: kStepperProcessParam) so that
+// roslaunch stops the run (the stepper is a required node).
 #pragma once
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <rosbag/bag.h>
@@ -56,6 +62,7 @@ class Recorder : public Participant {
   void topicsAnnounced(const std::vector<std::string>& topics,
                        const std::vector<std::string>& participants) override;
   void close(const ros::Time& t_end, bool aborted) override;
+  void stepperLost(const ros::Time& t, const std::string& message) override;
 
  private:
   void writeAt(const ros::Time& t);
@@ -63,7 +70,11 @@ class Recorder : public Participant {
   void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& m);
   void writeDiagnostics(const diagnostic_msgs::DiagnosticArray& m);
   bool diagnosticsComplete() const;
+  /// Ends the stepper's process if it runs on this host; says what it did.
+  std::string endStepper() const;
   std::unique_ptr<AsyncBagWriter> bag_;   // run.bag, written on its own thread
+  std::string bag_file_;     // its path
+  std::string status_file_;  // the run's status.json (written here only if the stepper fell silent)
   std::unique_ptr<rosbag::Bag> diag_bag_;
   std::string diag_file_;   // its file name (messages)
   std::string diag_error_;  // a failed write of it: stops the run at the next step

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "cosim/core/process_cpu.hpp"
+#include "cosim/core/status_file.hpp"
 #include "cosim/input_buffer.hpp"
 #include "cosim/wiring.hpp"
 
@@ -24,43 +25,6 @@ namespace hbt::cosim {
 using hybrid_bus_twin::StepCommand;
 using hybrid_bus_twin::StepStatus;
 using Clock = std::chrono::steady_clock;
-
-namespace {
-
-// Disk reserved at start beside the status file (<status file>.reserve) and freed just before the
-// status is written, so that the run's end is on record even when the disk filled up meanwhile
-// (the bag is what fills it).
-constexpr off_t kStatusReserve_bytes = 64 * 1024;
-
-std::string reserveFileOf(const std::string& status_file) { return status_file + ".reserve"; }
-
-/// Allocates `bytes` of disk to a file `path` (best effort).
-void reserveSpace(const std::string& path, off_t bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0) return;
-  (void)::posix_fallocate(fd, 0, bytes);
-  ::close(fd);
-}
-
-/// Writes `text` to `path`; "" or what failed.
-std::string writeFile(const std::string& path, const std::string& text) {
-  std::ofstream f(path);
-  f << text;
-  f.close();
-  return f ? "" : std::strerror(errno);
-}
-
-std::string jsonEscape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '"' || c == '\\') { o += '\\'; o += c; }
-    else if (c == '\n') o += "\\n";
-    else if (static_cast<unsigned char>(c) < 0x20) o += ' ';
-    else o += c;
-  }
-  return o;
-}
-}  // namespace
 
 Stepper::Stepper(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(std::move(nh)), pnh_(std::move(pnh)) {}
 
@@ -114,7 +78,8 @@ std::string Stepper::readParams(core::StepperConfig& cfg) {
 bool Stepper::start() {
   epoch_ = last_print_ = Clock::now();
   pnh_.param<std::string>("status_file", status_file_, "");
-  if (!status_file_.empty()) reserveSpace(reserveFileOf(status_file_), kStatusReserve_bytes);
+  if (!status_file_.empty()) core::reserveStatusSpace(status_file_);
+  ros::param::set(kStepperProcessParam, core::processName());  // for the recorder (recorder.hpp)
   pnh_.param("progress", progress_, true);
   core::StepperConfig cfg;
   const std::string error = readParams(cfg);
@@ -229,38 +194,25 @@ void Stepper::writeStatus(const std::string& status, const std::string& message,
                           uint64_t steps, double wall_s) {
   status_written_ = true;
   if (status_file_.empty()) return;
-  std::ostringstream f;
-  f << std::setprecision(17);
-  double dt = 0.01;
-  if (core_) dt = core_->dt_s();  // (no parameter server call: also at shutdown)
-  else pnh_.param("dt_s", dt, 0.01);
-  f << "{\n  \"status\": \"" << status << "\",\n  \"message\": \"" << jsonEscape(message)
-    << "\",\n  \"sim_time_s\": " << sim_s << ",\n  \"wall_time_s\": " << wall_s
-    << ",\n  \"steps\": " << steps << ",\n  \"macro_step_s\": " << dt << ",\n  \"compute_time_s\": {";
-  bool first = true;
-  if (core_)
-    for (const auto& kv : core_->peers()) {
-      f << (first ? "" : ",") << "\n    \"" << kv.first << "\": " << kv.second.compute_s;
-      first = false;
-    }
-  f << "\n  },\n  \"process_cpu_s\": {";
+  core::RunStatus st;
+  st.status = status;
+  st.message = message;
+  st.sim_time_s = sim_s;
+  st.wall_time_s = wall_s;
+  st.steps = steps;
+  st.macro_step_s = 0.01;
+  if (core_) st.macro_step_s = core_->dt_s();  // (no parameter server call: also at shutdown)
+  else pnh_.param("dt_s", st.macro_step_s, 0.01);
   // CPU time per process (user + system) [s]: the participants' processes and the stepper's own
   std::map<std::string, core::CpuReport> reports;
   if (core_)
-    for (const auto& kv : core_->peers()) reports[kv.first] = kv.second.cpu;
+    for (const auto& kv : core_->peers()) {
+      st.compute_time_s[kv.first] = kv.second.compute_s;
+      reports[kv.first] = kv.second.cpu;
+    }
   reports["stepper"] = {core::processName(), core::processCpuSeconds(), cpu_at_start_s_};
-  first = true;
-  for (const auto& p : core::cpuByProcess(reports)) {
-    f << (first ? "" : ",") << "\n    \"" << jsonEscape(p.process) << "\": {\"cpu_s\": " << p.cpu_s
-      << ", \"cpu_at_start_s\": " << p.cpu_at_start_s << ", \"participants\": [";
-    for (std::size_t i = 0; i < p.participants.size(); ++i)
-      f << (i ? ", " : "") << "\"" << jsonEscape(p.participants[i]) << "\"";
-    f << "]}";
-    first = false;
-  }
-  f << "\n  }\n}\n";
-  ::unlink(reserveFileOf(status_file_).c_str());  // its space is the status file's
-  const std::string failure = writeFile(status_file_, f.str());
+  st.process_cpu = core::cpuByProcess(reports);
+  const std::string failure = core::writeStatusFile(status_file_, st);
   if (!failure.empty()) ROS_ERROR_STREAM("stepper: cannot write the status file " << status_file_ << ": " << failure);
 }
 

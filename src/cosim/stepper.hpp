@@ -34,6 +34,10 @@
 
 namespace hbt::cosim {
 
+/// ROS parameter where the stepper leaves its process ("host:pid") at its start: the recorder
+/// ends a stepper that fell silent (died or hung, core/protocol.hpp) so that roslaunch stops.
+inline constexpr char kStepperProcessParam[] = "/twin/stepper_process";
+
 class Stepper : public core::StepperTransport {
  public:
   Stepper(ros::NodeHandle nh, ros::NodeHandle pnh);

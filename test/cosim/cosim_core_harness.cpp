@@ -90,7 +90,9 @@ bool FakeParticipant::readyToClose(Nanos t_end) const {
 
 void FakeParticipant::sendStatus(const Status& s) {
   if (hung) return;
-  bus_.post([this, s] { bus_.stepper->onStatus(s, bus_.wall); });
+  bus_.post([this, s] {
+    if (!bus_.stepperHung()) bus_.stepper->onStatus(s, bus_.wall);
+  });
   // silent_from_step: dies once it has reported it is done below k
   if (faults.silent_from_step >= 0 && s.status == St::Done &&
       s.step >= static_cast<uint64_t>(faults.silent_from_step))
@@ -172,10 +174,10 @@ void Bus::run(StepperConfig cfg, double max_wall_s) {
   for (int tick = 1; !completed && wall < max_wall_s; ++tick) {
     pump();
     wall += 0.05;
-    stepper->onTick(wall);
+    if (!stepperHung()) stepper->onTick(wall);
     if (tick % 2 == 0)
       for (auto& p : parts)
-        if (!p->faults.never_announce && !p->hung) p->core.onAnnounceTick();
+        if (!p->faults.never_announce && !p->hung) p->core.onTick();
     pump();
   }
 }

@@ -1,6 +1,6 @@
 // In-process harness for the ROS-free protocol core: a StepperCore and several ParticipantCores
 // wired by a FIFO "bus" (commands, statuses and topic messages are queued and delivered in order)
-// under a simulated wall clock (50 ms stepper ticks, 100 ms announce ticks). Each fake participant
+// under a simulated wall clock (50 ms stepper ticks, 100 ms participant ticks). Each fake participant
 // publishes, on each output topic, the stamp itself as value, so a consumer's log shows exactly
 // which stamp it read at each step. Faults are switched on per participant.
 #pragma once
@@ -92,6 +92,12 @@ class FakeParticipant : public ParticipantHooks {
   void sendStatus(const Status& s) override;
   void logError(const std::string&) override {}
   double wallNow() const override;
+  void stepperLost(Nanos t, const std::string& message) override {
+    stepper_lost.push_back({t, message});
+    stepper_lost_wall.push_back(wallNow());
+  }
+  std::vector<std::pair<Nanos, std::string>> stepper_lost;  // (t, message) of each stepperLost
+  std::vector<double> stepper_lost_wall;
   void command(const Command& c);
 
  private:
@@ -116,6 +122,9 @@ class Bus : public StepperTransport {
   std::vector<std::string> warnings;
   bool completed = false;
   double completed_wall = -1.0;
+  /// The stepper hangs from this wall time on [s] (< 0: never): no ticks, statuses not read.
+  double stepper_hung_from_wall = -1.0;
+  bool stepperHung() const { return stepper_hung_from_wall >= 0.0 && wall >= stepper_hung_from_wall; }
 
   FakeParticipant& add(const std::string& name, std::vector<std::string> in,
                        std::vector<std::string> out, Faults f = {}, bool observer = false);

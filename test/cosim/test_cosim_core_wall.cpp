@@ -129,3 +129,89 @@ TEST(CosimCore, SlowStepsReportByWallTimeAndNeverTimeOut) {
   EXPECT_EQ(bus.stepper->time(), 100 * MS);
   EXPECT_GT(bus.wall, 3.0);
 }
+
+TEST(CosimCore, StepperHungEveryParticipantClosesAfterTwiceTheTimeout) {
+  // the stepper stops answering at 1 s of wall time in a long run: with its heartbeat every
+  // timeout / 4 = 0.25 s, each participant hears nothing for 8 report periods (2 s) and closes
+  // as at an ABORT (the recorder's bag stays readable), telling its node (stepperLost)
+  Bus bus;
+  addSlowPair(bus, 0.001);  // 1 ms of wall per step of a: the run moves on in wall time
+  FakeParticipant& rec = bus.addRecorder({"/a/out", "/b/out"});
+  bus.stepper_hung_from_wall = 1.0;
+  bus.run(config({"a", "b", "recorder"}, 1000.0), 6.0);
+  EXPECT_FALSE(bus.completed);  // the stepper never ends the run itself
+  for (const char* n : {"a", "b", "recorder"}) {
+    const FakeParticipant& p = bus.get(n);
+    ASSERT_EQ(p.stepper_lost.size(), 1u) << n;
+    EXPECT_GT(p.stepper_lost_wall[0], 1.0 + 2.0 - 0.25) << n;  // not before 2 s of silence
+    EXPECT_LE(p.stepper_lost_wall[0], 1.0 + 2.0 + 0.15) << n;  // within a tick of it
+    EXPECT_NE(p.stepper_lost[0].second.find("the stepper died or hung; closed at t = "), std::string::npos)
+        << p.stepper_lost[0].second;
+    ASSERT_EQ(p.closed_aborted.size(), 1u) << n;
+    EXPECT_TRUE(p.closed_aborted[0]) << n;
+    EXPECT_EQ(p.closed_at[0], static_cast<Nanos>(p.core.next()) * 10 * MS) << n;  // at its t_n
+  }
+  EXPECT_GT(rec.records.size(), 10u);  // it recorded the stretch that ran
+}
+
+namespace {
+/// A transport that only records the commands and their wall times.
+struct CommandLog : StepperTransport {
+  double wall = 0.0;
+  std::vector<std::pair<double, Command>> sent;
+  void sendCommand(const Command& c) override { sent.push_back({wall, c}); }
+  void publishClock(Nanos) override {}
+  void complete() override {}
+};
+
+Status status(const std::string& node, St st, uint64_t step) {
+  Status s;
+  s.node = node;
+  s.status = st;
+  s.step = step;
+  s.t = static_cast<Nanos>(step) * 10 * MS;
+  return s;
+}
+}  // namespace
+
+TEST(CosimCore, StepperHeartbeatWhileTheGrantStandsStill) {
+  // a is stuck in a long step at step 1 while b keeps reporting progress inside its grant (one
+  // step per 0.2 s of wall): no new GRANT (the slowest does not move), no QUERY (someone
+  // progresses), yet the stepper sends a command at least every timeout / 4 (its latest GRANT
+  // again: the same horizons), so a participant can tell a live stepper from a dead one
+  CommandLog tr;
+  StepperCore st(config({"a", "b"}, 100.0), tr);
+  st.begin(0.0);
+  st.onStatus(status("a", St::Announce, 0), 0.0);
+  st.onStatus(status("b", St::Announce, 0), 0.0);
+  tr.wall = 0.05;
+  st.onTick(0.05);  // -> SYNC round 1
+  for (const char* n : {"a", "b"}) {
+    Status ready = status(n, St::Ready, 1);
+    ready.step_multiple = 1;
+    st.onStatus(ready, 0.06);
+  }
+  tr.wall = 0.1;
+  st.onTick(0.1);  // -> START, first GRANT
+  ASSERT_EQ(st.phase(), Phase::Stepping);
+  st.onStatus(status("a", St::Done, 1), 0.1);
+  st.onStatus(status("b", St::Done, 1), 0.1);
+  const uint64_t grants_at_start = st.grants();
+  uint64_t n = 1;
+  for (double w = 0.15; w < 9.0; w += 0.05) {
+    tr.wall = w;
+    if (static_cast<int>(std::lround(w / 0.05)) % 4 == 0) st.onStatus(status("b", St::Done, ++n), w);
+    st.onTick(w);
+  }
+  ASSERT_EQ(st.phase(), Phase::Stepping) << st.reason();
+  EXPECT_EQ(st.grants(), grants_at_start);  // the horizons stood still
+  EXPECT_GT(st.heartbeats(), 30u);
+  double last = -1.0;
+  for (const auto& [wall, c] : tr.sent) {
+    EXPECT_NE(c.command, Cmd::Query);
+    if (c.command != Cmd::Grant) continue;
+    if (last >= 0.0) EXPECT_LE(wall - last, st.heartbeatPeriod_s() + 0.05 + 1e-9);
+    last = wall;
+  }
+  EXPECT_GT(last, 8.5);
+}

@@ -1,11 +1,13 @@
 #!/usr/bin/python3
 """Fault injection, every participant: hybrid_urban in nodes mode (one process each), each of the
 seven participants and the recorder killed (SIGKILL) and hung (SIGSTOP) once it is stepping, and
-the stepper killed. The run stops within 2 s of the kill (the step timeout, 1 s) or at the timeout
+the stepper killed and hung. The run stops within 2 s of the kill (the step timeout, 1 s) or at the timeout
 of the hang, status.json "error" names the node (as one that did not answer: "node died or hung"),
 and run.bag is closed and readable (the recorder killed: cut short, readable after
 `rosbag reindex`). The stepper killed: roslaunch stops the run (the stepper is required) and the
-status twin writes then (twin_tools.launch.lost_status) names it and the signal.
+status twin writes then (twin_tools.launch.lost_status) names it and the signal. The stepper
+hung: every participant misses its heartbeat for 2 timeouts; the recorder closes the bag, writes
+the status naming the stepper and ends it.
 Faults of a model (a step that throws or yields NaN) are tested per model (their ModelDivergence
 and InputError tests) and for the protocol in test/cosim; this test covers the processes."""
 import os
@@ -22,6 +24,14 @@ from twin_tools.paths import REPO
 LAUNCH = os.path.join(REPO, "launch", "hybrid_urban.launch")
 PARTICIPANTS = ("vehicle", "engine", "aftertreatment", "cooling", "ems", "emachine", "battery", "recorder")
 TIMEOUT_S = 1.0
+MODEL_FAULT_AT_S = 3.0  # [s] simulated: when a model's step fails
+DEVEL_LIB = os.path.join(REPO, "build", "devel", "lib")  # scripts/twin builds into <repo>/build
+FAULT_NODELETS = os.path.join(REPO, "build", "fault_lib", "libhbt_nodelets.so")
+# what each participant's NaN shows as: its output topic and field (test/faults/fault_hooks.cpp)
+NAN_OUTPUT = {"battery": "/battery/state: soc = nan", "aftertreatment": "/aftertreatment/state: outlet_temperature_k = nan",
+              "cooling": "/cooling/state: coolant_ht_temperature_k = nan", "emachine": "/emachine/state: torque_nm = nan",
+              "ems": ": engine_torque_request_nm = nan", "vehicle": ": engine_speed_rad_s = nan",
+              "engine": "/engine/state: fuel_mass_flow_kg_s = nan"}
 
 
 def inject(tmp, name, sig, after_s=20.0):
@@ -39,7 +49,10 @@ def inject(tmp, name, sig, after_s=20.0):
         while proc.poll() is None and not (os.path.exists(path) and os.path.getsize(path) > 0):
             time.sleep(0.05)
         if sig == signal.SIGSTOP:  # on record: end the hung process now (roslaunch would wait 15 s)
-            os.kill(pid, signal.SIGKILL)
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:  # the hung stepper: the recorder ended it already
+                pass
         rc = run_util.wait(proc, 90)
         if not os.path.exists(path):
             return out, None, None, rc
@@ -48,7 +61,40 @@ def inject(tmp, name, sig, after_s=20.0):
         run_util.stop(proc)
 
 
-def readable(tc, out, name):
+def fault_overlay(tmp, name):
+    """A catkin workspace prefix put first on CMAKE_PREFIX_PATH, whose lib/ holds the test builds of
+    test/faults: lib/hybrid_bus_twin/ the package's executables with <name>_node replaced by
+    <name>_fault_node (roslaunch takes a node's executable from the first workspace that has the
+    package), lib/libhbt_nodelets.so the nodelets with every hook (pluginlib tries each prefix's
+    lib/ in turn). Returns the environment."""
+    ws = os.path.join(tmp, "overlay_" + name)
+    lib = os.path.join(ws, "lib", "hybrid_bus_twin")
+    if not os.path.isdir(lib):
+        os.makedirs(lib)
+        open(os.path.join(ws, ".catkin"), "w").close()
+        real = os.path.join(DEVEL_LIB, "hybrid_bus_twin")
+        for f in os.listdir(real):
+            os.symlink(os.path.join(real, f), os.path.join(lib, f))
+        os.remove(os.path.join(lib, name + "_node"))
+        os.symlink(os.path.join(real, name + "_fault_node"), os.path.join(lib, name + "_node"))
+        os.symlink(FAULT_NODELETS, os.path.join(ws, "lib", "libhbt_nodelets.so"))
+    return {"CMAKE_PREFIX_PATH": ws + os.pathsep + os.environ.get("CMAKE_PREFIX_PATH", "")}
+
+
+def model_fault(tmp, name, kind, mode, at_s=MODEL_FAULT_AT_S):
+    """hybrid_urban with participant `name`'s model step failing (kind "throw" or "nan") at
+    simulated time at_s; returns (out, status, the roslaunch's exit)."""
+    out = os.path.join(tmp, "%s_%s_%s" % (name, kind, mode))
+    env = dict(fault_overlay(tmp, name), HBT_FAULT_PARTICIPANT=name, HBT_FAULT=kind, HBT_FAULT_AT_S=str(at_s))
+    proc = run_util.start_launch(LAUNCH, out, env=env, until=0, mode=mode, timeout=TIMEOUT_S)
+    try:
+        rc = run_util.wait(proc, 120)
+        return out, run_util.read_status(out), rc
+    finally:
+        run_util.stop(proc)
+
+
+def readable(tc, out, name, min_states=100):
     import rosbag
     bag = os.path.join(out, "run.bag")
     try:
@@ -61,7 +107,7 @@ def readable(tc, out, name):
     with rosbag.Bag(bag) as b:
         for _ in b.read_messages(topics=["/vehicle/state"]):
             n += 1
-    tc.assertGreater(n, 100, (name, out))  # the vehicle's states of the stretch that ran
+    tc.assertGreater(n, min_states, (name, out))  # the vehicle's states of the stretch that ran
 
 
 class Faults(unittest.TestCase):
@@ -72,8 +118,8 @@ class Faults(unittest.TestCase):
 
     @classmethod
     def tearDownClass(cls):
-        for row in cls.table:
-            print("| %s | %s | %s | %.2f s |" % row)
+        for name, fault, message, delay in cls.table:  # delay: from the signal to the status file
+            print("| %s | %s | %s | %s |" % (name, fault, message, "at the step" if delay is None else "%.2f s" % delay))
         shutil.rmtree(cls.tmp, ignore_errors=True)
 
     def check(self, name, sig, limit_s):
@@ -105,6 +151,47 @@ class Faults(unittest.TestCase):
         self.assertIn("stepper died (killed by SIGKILL) before the run's end", lost["message"])
         self.assertGreater(lost["sim_time_s"], 10.0)
         readable(self, out, "stepper")
+
+    def check_model_fault(self, name, kind, mode):
+        out, st, rc = model_fault(self.tmp, name, kind, mode)
+        self.assertEqual(st.get("status"), "error", (name, kind, st))
+        m = st["message"]
+        self.assertRegex(m, r"^%s: step \d+ \(t = %.6f s\) failed: " % (name, MODEL_FAULT_AT_S), (name, kind, m))
+        if kind == "throw":
+            self.assertIn("::step: state: diverged at t = %g s" % MODEL_FAULT_AT_S, m)
+        else:
+            self.assertIn(NAN_OUTPUT[name], m)
+            # stamped at the end of the failed step: t + its macro step (10 ms, or 100 ms)
+            self.assertRegex(m, r"not finite in the output stamped t = 3\.(010|100) s$")
+        self.assertAlmostEqual(st["sim_time_s"], MODEL_FAULT_AT_S, delta=0.1)
+        self.assertNotEqual(rc, None)
+        readable(self, out, name, min_states=10)
+        self.table.append((name, "%s (%s)" % (kind, mode), m[:90], None))
+
+    def test_each_model_step_throws(self):
+        for mode in ("nodes", "nodelets"):
+            for name in PARTICIPANTS[:-1]:
+                with self.subTest(name=name, mode=mode):
+                    self.check_model_fault(name, "throw", mode)
+
+    def test_each_model_yields_nan(self):
+        for mode in ("nodes", "nodelets"):
+            for name in PARTICIPANTS[:-1]:
+                with self.subTest(name=name, mode=mode):
+                    self.check_model_fault(name, "nan", mode)
+
+    def test_stepper_hung(self):
+        # every participant hears nothing for 2 timeouts; the recorder closes the bag, writes the
+        # status and ends the stepper, so roslaunch stops (the stepper is required)
+        out, st, delay, _ = inject(self.tmp, "stepper", signal.SIGSTOP, after_s=10.0)
+        self.assertIsNotNone(st, "no status.json")
+        self.assertEqual(st["status"], "error", st)
+        self.assertRegex(st["message"], r"^stepper \(.+:\d+\): no command from the stepper for [0-9.]+ s .*"
+                         r"the stepper died or hung; closed at t = [0-9.]+ s; the recorder closed .*run.bag")
+        self.assertGreater(st["sim_time_s"], 10.0)
+        self.assertLess(delay, 2 * TIMEOUT_S + 2.0)
+        readable(self, out, "stepper")
+        self.table.append(("stepper", "SIGSTOP", st["message"][:90], delay))
 
 
 if __name__ == "__main__":

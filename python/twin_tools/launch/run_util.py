@@ -19,11 +19,12 @@ def free_port():
         return s.getsockname()[1]
 
 
-def start_launch(launch_file, out_dir, **args):
-    """Starts roslaunch on a private master; returns the Popen (its own process group)."""
+def start_launch(launch_file, out_dir, env=None, **args):
+    """Starts roslaunch on a private master; returns the Popen (its own process group). `env`:
+    variables added to the environment of roslaunch and its nodes."""
     os.makedirs(out_dir, exist_ok=True)
     port = free_port()
-    env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_HOME=out_dir)
+    env = dict(os.environ, **(env or {}), ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_HOME=out_dir)
     cmd = ["roslaunch", "--no-summary", "-p", str(port), launch_file, "out:=" + out_dir]
     cmd += ["%s:=%s" % (k, v) for k, v in args.items()]
     with open(os.path.join(out_dir, "roslaunch.log"), "w") as log:

@@ -105,11 +105,35 @@ void ParticipantCore::report(St status, uint64_t step, Nanos t, const std::strin
   h_.sendStatus(s);
 }
 
-bool ParticipantCore::onAnnounceTick() {
-  if (closed_ || started_) return false;
+bool ParticipantCore::onTick() {
+  if (closed_ || closing_) return false;
+  if (started_) {
+    watchStepper();
+    return !closed_;
+  }
   if (failed_) report(St::Error, 0, 0, error_);
   else if (configured_) report(St::Announce, 0, 0);
   return true;
+}
+
+void ParticipantCore::watchStepper() {
+  const double silent_s = h_.wallNow() - last_heard_wall_;
+  const double limit_s = kStepperSilenceReportPeriods * report_wall_s_;
+  if (silent_s <= limit_s) return;
+  const Nanos t = static_cast<Nanos>(n_) * base_ns_;
+  std::ostringstream os;
+  os << "no command from the stepper for " << std::fixed << std::setprecision(1) << silent_s
+     << std::defaultfloat << " s (its heartbeat comes every " << report_wall_s_ << " s; the limit is "
+     << limit_s << " s): the stepper died or hung; closed at t = " << seconds(t);
+  const std::string message = os.str();
+  h_.logError(name_ + ": " + message);
+  try {
+    h_.close(t, true);
+  } catch (const std::exception& e) {
+    h_.logError(name_ + ": closing failed: " + e.what());
+  }
+  closed_ = true;
+  h_.stepperLost(t, message);
 }
 
 void ParticipantCore::applyTable(const Table& tb) {
@@ -198,6 +222,7 @@ void ParticipantCore::sendKeptAt(uint64_t k_end) {
 
 void ParticipantCore::onCommand(const Command& c) {
   if (closed_) return;
+  last_heard_wall_ = h_.wallNow();
   switch (c.command) {
     case Cmd::Sync: {
       if (failed_) { report(St::Error, c.step, 0, error_); return; }
@@ -217,7 +242,7 @@ void ParticipantCore::onCommand(const Command& c) {
       if (!configured_ || started_ || !checkPeriod(c.dt_s)) return;
       started_ = true;
       applyTable(c.table);
-      last_report_wall_ = h_.wallNow();
+      last_report_wall_ = last_heard_wall_;
       try {
         h_.publishOutputs(0);  // the state at t_0, before anyone steps
       } catch (const std::exception& e) {
@@ -291,6 +316,12 @@ void ParticipantCore::reportProgress(bool force) {
 }
 
 void ParticipantCore::tryStep() {
+  const uint64_t n0 = n_;
+  stepWhileReady();
+  if (n_ != n0) last_heard_wall_ = h_.wallNow();  // a long step of its own is no silence
+}
+
+void ParticipantCore::stepWhileReady() {
   if (closing_) { tryClose(); return; }
   if (!started_ || failed_ || closed_ || finished_) return;
   while (n_ < horizon_) {

@@ -3,7 +3,7 @@
 //
 //   start()          configure() through the hooks, then validate the macro step request
 //                    (errors -> ERROR status "name: ..." naming file and key)
-//   onAnnounceTick() every 100 ms wall until START: ANNOUNCE(outputs, inputs, observer, mission
+//   onTick()         every 100 ms wall. Until START: ANNOUNCE(outputs, inputs, observer, mission
 //                    duration), or ERROR again while failed
 //   SYNC r           checks the period against the base step (must be an integer multiple), asks
 //                    the hooks for missing links: READY(r, step_multiple, inputs) or WAITING(r, links)
@@ -19,6 +19,9 @@
 //                    FINISHED(n) when finished() says it reached the end of its input (then it
 //                    steps no more).
 //   QUERY            WAITING(n, what it waits for: which input at which stamp, or the grant)
+//   (silence)        onTick() while started: no command for kStepperSilenceReportPeriods report
+//                    periods since the later of the last command and its own last step -> the
+//                    stepper died or hung: close(t_n, true), then stepperLost(t_n, message)
 //   FINISH k_end     publishes the deferred outputs an observer reads at t_end, then
 //                    close(t_end, false) once readyToClose(t_end); CLOSED
 //   ABORT            close(t_end, true) at once; CLOSED
@@ -77,6 +80,9 @@ class ParticipantHooks {
   virtual void logError(const std::string& msg) = 0;
   /// Wall clock [s] for the report period (tests drive a simulated one).
   virtual double wallNow() const;
+  /// The stepper fell silent (died or hung) while stepping; this participant has closed as at an
+  /// ABORT at t_n. `message` says so (seconds of silence, t_n).
+  virtual void stepperLost(Nanos t, const std::string& message) {}
 };
 
 /// Requested macro step: 0 = the base step. `where`/`key` name its source for errors.
@@ -116,8 +122,9 @@ class ParticipantCore {
 
   // --- events ---
   void start();
-  /// Returns false once announcing is over (STARTed or closed): the caller may stop its timer.
-  bool onAnnounceTick();
+  /// Every 100 ms wall: announces until START, then watches the stepper's heartbeat. Returns
+  /// false once closed (or closing): the caller may stop its timer.
+  bool onTick();
   void onCommand(const Command& c);
   void onArrival();
 
@@ -157,10 +164,12 @@ class ParticipantCore {
   bool checkPeriod(double base_dt_s);
   void applyTable(const Table& table);
   void tryStep();
+  void stepWhileReady();
   void tryClose();
   void trimKept(uint64_t confirmed);
   void sendKeptAt(uint64_t k_end);
   std::string describeWait() const;
+  void watchStepper();
 
   std::string name_;
   ParticipantHooks& h_;
@@ -175,6 +184,7 @@ class ParticipantCore {
   uint32_t multiple_ = 1, group_ = 0, window_ = 1;
   double base_dt_s_ = 0.0, dt_s_ = 0.0;  // base step, own macro step [s]
   double report_wall_s_ = 0.25, last_report_wall_ = 0.0;
+  double last_heard_wall_ = 0.0;  // the later of the last command and the end of its last step [s]
   Nanos base_ns_ = 0, period_ns_ = 0;
   uint64_t n_ = 0, horizon_ = 0, reported_ = 0;
   Nanos t_close_ = 0;

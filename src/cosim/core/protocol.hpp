@@ -18,6 +18,12 @@
 //                the end) | ABORT (ERROR, timeout)  -> everyone CLOSED
 //   stepper:     QUERY when no participant progressed for timeout_s / 2: every participant that
 //                can answers WAITING(n, what it waits for); the silent ones are named at the abort
+//   stepper:     its latest GRANT again whenever it sent no command for a report period
+//                (report_wall_s = timeout_s / 4): the stepper's heartbeat. A started participant
+//                that heard nothing from it for kStepperSilenceReportPeriods report periods (counted
+//                from its own last step, so a long step of its own is no silence) takes the
+//                stepper as died or hung and closes as at an ABORT (the recorder also records the
+//                run's status and ends the stepper's process: recorder.hpp)
 //
 // Time is simulated time in integer nanoseconds (`Nanos`), so every participant agrees exactly;
 // base-step indices are integers (t_k = k * dt).
@@ -30,6 +36,10 @@
 namespace hbt::cosim::core {
 
 using Nanos = int64_t;
+
+/// Silence of the stepper [report periods] after which a participant takes it as died or hung:
+/// 8 x report_wall_s = 2 timeout_s (the stepper's own limit for a silent participant is 1 x).
+constexpr double kStepperSilenceReportPeriods = 8.0;
 
 /// Values match msg/StepCommand.msg.
 enum class Cmd : uint8_t { Grant = 0, Finish = 1, Abort = 2, Sync = 3, Start = 4, Query = 5 };

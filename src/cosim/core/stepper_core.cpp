@@ -222,7 +222,7 @@ void StepperCore::fillTable(Table& t, bool readers) const {
     }
   }
   t.window = cfg_.window_steps;
-  t.report_wall_s = cfg_.timeout_s / 4.0;
+  t.report_wall_s = heartbeatPeriod_s();
   if (!readers) return;
   for (const auto& n : cfg_.participants) {
     const Peer& c = peers_.at(n);
@@ -281,6 +281,8 @@ void StepperCore::update(double wall_s) {
     c.t = static_cast<Nanos>(h) * dt_ns_;
     c.dt_s = cfg_.dt_s;
     ++grants_;
+    last_grant_ = c;
+    last_sent_wall_ = wall_s;
     tr_.sendCommand(c);
   }
   if (slowest != k_) {
@@ -339,7 +341,10 @@ void StepperCore::onTick(double wall_s) {
         c.step = k_;
         c.t = t_;
         c.dt_s = cfg_.dt_s;
+        last_sent_wall_ = wall_s;
         tr_.sendCommand(c);
+      } else {
+        heartbeat(wall_s);
       }
       return;
     case Phase::Closing:
@@ -351,6 +356,13 @@ void StepperCore::onTick(double wall_s) {
     case Phase::Done:
       return;
   }
+}
+
+void StepperCore::heartbeat(double wall_s) {
+  if (grants_ == 0 || wall_s - last_sent_wall_ < heartbeatPeriod_s()) return;
+  last_sent_wall_ = wall_s;
+  ++heartbeats_;
+  tr_.sendCommand(last_grant_);  // idempotent: the horizons every participant already has
 }
 
 void StepperCore::timeout(double wall_s) {

@@ -32,6 +32,9 @@
 //            E without the failed one (its outputs up to t_{k_e} were published).
 //  Closing   FINISH/ABORT sent; waits for CLOSED from all (0.7 s wall after ABORT, 5 s after
 //            FINISH; participants silent at a step timeout are not waited for), then Done.
+//            Heartbeat: whenever it sent no command for a report period (timeout_s / 4, the
+//            participants' report_wall_s) it sends its latest GRANT again, so that participants
+//            can tell a silent stepper (died or hung) from a slow run (protocol.hpp).
 // Abort paths: an ERROR status (Announce/Sync: at once; Stepping: at its step, see above),
 // start-up timeout (someone never announces or links never ready within startup_timeout_s), step
 // timeout (no participant reported progress for timeout_s: at timeout_s / 2 a QUERY asks everyone
@@ -120,8 +123,12 @@ class StepperCore {
   double wallStart_s() const { return wall0_; }
   const std::map<std::string, Peer>& peers() const { return peers_; }
   const std::vector<std::vector<std::string>>& groups() const { return groups_; }
-  /// Number of GRANT commands sent.
+  /// Number of GRANT commands sent (heartbeats not counted).
   uint64_t grants() const { return grants_; }
+  /// Number of heartbeats (the latest GRANT sent again).
+  uint64_t heartbeats() const { return heartbeats_; }
+  /// Report period of the participants and heartbeat period of the stepper [s wall].
+  double heartbeatPeriod_s() const { return cfg_.timeout_s / 4.0; }
 
  private:
   std::string buildGroups();
@@ -131,6 +138,7 @@ class StepperCore {
   void fillTable(Table& t, bool readers) const;
   void update(double wall_s);
   void timeout(double wall_s);
+  void heartbeat(double wall_s);
   void finish(bool aborted, const std::string& reason, double wall_s);
   void complete();
   void clockAt(Nanos t, double wall_s);
@@ -147,6 +155,9 @@ class StepperCore {
   uint64_t k_ = 0, sync_round_ = 0, grants_ = 0;
   uint64_t end_until_ = kNever, end_finished_ = kNever, end_error_ = kNever;
   uint64_t horizon_ = 0, horizon_obs_ = 0, confirmed_ = 0;
+  Command last_grant_;           // the latest GRANT (sent again as the heartbeat)
+  double last_sent_wall_ = 0.0;  // wall time of the latest GRANT or QUERY [s]
+  uint64_t heartbeats_ = 0;
   std::string error_reason_, finished_by_;
   bool aborted_ = false, query_sent_ = false;
   std::string reason_;
