@@ -9,10 +9,14 @@ HBT_PARTICIPANT_NODELET(hbt::cosim::ProbeParticipant, ProbeNodelet)
 
 namespace hbt::nodelets {
 class StepperNodelet : public nodelet::Nodelet {
+  static constexpr const char* kStepperThread = "stepper";
   void onInit() override {
-    queue_ = hbt::cosim::LockstepQueue::acquire();
+    // a thread of its own: a participant stuck in its step on the lock-step thread does not
+    // stop the stepper's timeout (cosim/core/step_watch.hpp)
+    queue_ = hbt::cosim::LockstepQueue::acquire(kStepperThread);
     stepper_ = std::make_unique<hbt::cosim::Stepper>(queue_->bind(getNodeHandle()),
                                                      queue_->bind(getPrivateNodeHandle()));
+    stepper_->endProcessIfStuck(true);
     stepper_->start();
   }
   std::shared_ptr<hbt::cosim::LockstepQueue> queue_;  // declared first: outlives the stepper

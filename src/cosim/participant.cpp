@@ -146,7 +146,12 @@ Participant::Participant(ros::NodeHandle nh, ros::NodeHandle pnh, std::string na
       hooks_(std::make_unique<Hooks>(*this)),
       core_(name_, *hooks_) {}
 
-Participant::~Participant() = default;
+Participant::~Participant() {
+  // no timer or command callback may run beside (or after) this: mode:=nodelets unloads from
+  // another thread than the one the callbacks run on (stop/shutdown wait for one in progress)
+  tick_timer_.stop();
+  cmd_sub_.shutdown();
+}
 
 void Participant::readDiagnosticsParams() {
   std::string file = "/scenario/diagnostics (rosparam)";

@@ -207,6 +207,7 @@ class Participant {
   /// After the state stamped t was published: warnings, then a status if one is due (or final).
   void diagnose(core::Nanos t, bool final);
 
+  std::recursive_mutex mutex_;  // first: destroyed last, after every member a callback touches
   std::string name_;
   std::unique_ptr<Hooks> hooks_;
   core::ParticipantCore core_;
@@ -219,7 +220,6 @@ class Participant {
   diagnostic_msgs::DiagnosticArray final_diag_;
   std::string host_;
   ros::WallTimer tick_timer_;
-  std::recursive_mutex mutex_;
 };
 
 /// Simulated time of step k, computed in integer nanoseconds so that every node agrees exactly.

@@ -10,12 +10,14 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
 
 #include "cosim/core/process_cpu.hpp"
+#include "cosim/core/step_watch.hpp"
 #include "cosim/core/status_file.hpp"
 #include "cosim/input_buffer.hpp"
 #include "cosim/wiring.hpp"
@@ -177,10 +179,20 @@ void Stepper::complete() {
   timer_.stop();
   writeStatus(core_->aborted() ? "error" : "ok", core_->reason(), core::toSec(core_->time()),
               core_->step(), wallNow() - core_->wallStart_s());
+  const std::string stuck = core::StepWatch::describe(core::steadyNow_s());
+  if (end_process_if_stuck_ && !stuck.empty()) {
+    ROS_ERROR_STREAM("stepper: " << stuck << ": it never returns, and the process cannot shut down "
+                     "around it: ending the process (status written, bag closed)");
+    std::fflush(nullptr);
+    std::_Exit(1);
+  }
   ros::requestShutdown();
 }
 
 Stepper::~Stepper() {
+  // no callback may run beside (or after) this: mode:=nodelets unloads from another thread
+  timer_.stop();
+  status_sub_.shutdown();
   if (!core_ || status_written_) return;
   const double t_s = core::toSec(core_->time());
   std::ostringstream msg;

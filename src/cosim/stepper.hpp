@@ -45,6 +45,11 @@ class Stepper : public core::StepperTransport {
   /// down, Ctrl-C on `twin run`) leaves status "interrupted", message "interrupted at t = ... s"
   /// (the time every participant was done through: what the bag holds).
   ~Stepper() override;
+  /// mode:=nodelets: at the run's end, a participant of this process still inside its model step
+  /// (it blocks its thread for good, and the manager could never shut down) ends the process
+  /// (exit status 1) once the status is written; roslaunch then stops the run (the manager is
+  /// required). The bag is closed already: the recorder runs on a thread of its own.
+  void endProcessIfStuck(bool on) { end_process_if_stuck_ = on; }
   /// Reads parameters; returns false (after writing the status file) on bad parameters.
   bool start();
 
@@ -71,6 +76,7 @@ class Stepper : public core::StepperTransport {
   bool progress_ = true;
   std::string status_file_;
   bool status_written_ = false;  // the run's end (ok, error) is on record
+  bool end_process_if_stuck_ = false;
   double cpu_at_start_s_ = 0.0;  // this process's CPU time when START was sent [s]
   std::chrono::steady_clock::time_point epoch_, last_print_;
 };

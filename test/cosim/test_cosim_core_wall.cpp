@@ -210,7 +210,9 @@ TEST(CosimCore, StepperHeartbeatWhileTheGrantStandsStill) {
   for (const auto& [wall, c] : tr.sent) {
     EXPECT_NE(c.command, Cmd::Query);
     if (c.command != Cmd::Grant) continue;
-    if (last >= 0.0) EXPECT_LE(wall - last, st.heartbeatPeriod_s() + 0.05 + 1e-9);
+    if (last >= 0.0) {
+      EXPECT_LE(wall - last, st.heartbeatPeriod_s() + 0.05 + 1e-9);
+    }
     last = wall;
   }
   EXPECT_GT(last, 8.5);

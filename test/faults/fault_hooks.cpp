@@ -6,20 +6,23 @@
 // The product's executables, nodelets and libraries are built and linked without it.
 // The nodelets' form: libhbt_nodelets built again with every participant's hook, in its own folder
 // (the test puts it first on the library path of pluginlib).
-//   HBT_FAULT_PARTICIPANT=<name>   HBT_FAULT=throw|nan   HBT_FAULT_AT_S=<simulated time [s], default 5>
+//   HBT_FAULT_PARTICIPANT=<name>   HBT_FAULT=throw|nan|hang   HBT_FAULT_AT_S=<simulated time [s], default 5>
 // throw: the step starting at or after HBT_FAULT_AT_S throws ModelDivergence (as a model whose
 //        state became non-physical does); nan: from that step on, one output of the model is NaN
-//        (HBT_FAULT_FIELD below), which the participant publishes.
+//        (HBT_FAULT_FIELD below), which the participant publishes; hang: that step never returns
+//        (an endless loop in a model).
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "common/errors.hpp"
 
 namespace {
-enum class Kind { None, Throw, NaN };
+enum class Kind { None, Throw, NaN, Hang };
 
 struct Fault {
   Kind kind = Kind::None;
@@ -33,17 +36,18 @@ Fault& fault() {
     const char* k = std::getenv("HBT_FAULT");
     const char* p = std::getenv("HBT_FAULT_PARTICIPANT");
     const std::string kind = k && p && std::string(p) == HBT_FAULT_NAME ? k : "";
-    r.kind = kind == "throw" ? Kind::Throw : kind == "nan" ? Kind::NaN : Kind::None;
+    r.kind = kind == "throw" ? Kind::Throw : kind == "nan" ? Kind::NaN : kind == "hang" ? Kind::Hang : Kind::None;
     if (const char* a = std::getenv("HBT_FAULT_AT_S")) r.at_s = std::strtod(a, nullptr);
     return r;
   }();
   return f;
 }
 
-/// Before the step from t to t + dt: throws if a throw is due.
+/// Before the step from t to t + dt: throws if a throw is due, never returns if a hang is.
 void beforeStep(const char* model) {
   const Fault& f = fault();
-  if (f.kind != Kind::Throw || f.t_s < f.at_s - 1e-9) return;
+  if (f.kind == Kind::None || f.kind == Kind::NaN || f.t_s < f.at_s - 1e-9) return;
+  while (f.kind == Kind::Hang) std::this_thread::sleep_for(std::chrono::seconds(1));
   std::ostringstream os;
   os << "diverged at t = " << f.t_s << " s (fault injected by the test hook)";
   throw hbt::ModelDivergence(model, "state", os.str());

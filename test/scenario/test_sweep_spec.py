@@ -14,6 +14,7 @@ import unittest
 
 import yaml
 
+from twin_tools.launch import ports
 from twin_tools.sweep import cli as sweep
 from twin_tools.sweep import config_edit as sweep_yaml
 from twin_tools.sweep import run as sweep_run
@@ -228,11 +229,11 @@ class Table(unittest.TestCase):
         self.assertEqual(sweep_run.fmt_time(3725), "1h02m05s")
 
     def test_port_reservation_is_exclusive(self):
-        p1, fd1 = sweep_run.reserve_port(0)
-        p2, fd2 = sweep_run.reserve_port(p1 - sweep_run.PORT_LO)  # asks for the same first: gets another
+        p1, fd1 = ports.reserve_port(0)
+        p2, fd2 = ports.reserve_port(p1 - ports.PORT_LO)  # asks for the same first: gets another
         try:
             self.assertNotEqual(p1, p2)
-            self.assertTrue(sweep_run.PORT_LO <= p1 < sweep_run.PORT_HI)
+            self.assertTrue(ports.PORT_LO <= p1 < ports.PORT_HI)
         finally:
             os.close(fd1)
             os.close(fd2)

@@ -24,6 +24,10 @@
   scripts/twin bench rates [--engines map,1d] [--until S]  multi-rate stepping vs everything at
                                     the 10 ms base step (cooling macro step, ATS model step 0.01 s
                                     in a config copy): fuel and temperature rises
+  scripts/twin bench soak [--runs N] [--jobs J] [--until S]  N full map-engine missions (default 20:
+                                    both scenarios, 5 ambients, 2 payloads), J at a time (default 4):
+                                    failed runs, timeouts, finite summaries, the manager's RSS from
+                                    the first mission to the last (twin_tools.bench.soak)
   scripts/twin bench cosim [--steps K]  the lock-step protocol alone: base steps per second for 3,
                                     5 and 8 probe participants (no model), nodelets and nodes, one
                                     rate / multi-rate / one Gauss-Seidel group per participant
@@ -43,6 +47,7 @@ import sys
 import time
 
 from twin_tools.bench import cosim as bench_cosim
+from twin_tools.bench import soak as bench_soak
 from twin_tools.bench.docs import Measurement
 from twin_tools.bench.rates_config import all_fast_config
 from twin_tools.paths import REPO
@@ -343,15 +348,21 @@ def bench_rates(a):
 def main():
     ap = argparse.ArgumentParser(prog="twin bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", nargs="?", default="map", choices=["map", "1d", "engine", "ambient", "hybrid", "rates", "cosim"])
+    ap.add_argument("what", nargs="?", default="map",
+                    choices=["map", "1d", "engine", "ambient", "hybrid", "rates", "cosim", "soak"])
     ap.add_argument("--engines", default="map,1d", help="ambient, hybrid: engine models, comma-separated")
-    ap.add_argument("--jobs", type=int, default=1, help="ambient, hybrid: runs at a time")
+    ap.add_argument("--jobs", type=int, default=None, help="ambient, hybrid (default 1), soak (default 4): runs at a time")
+    ap.add_argument("--runs", type=int, default=20, help="soak: missions")
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     ap.add_argument("--duration", type=float, default=1800.0,
                     help="engine: WHTC seconds to run (default the whole 1800 s)")
     ap.add_argument("--steps", type=int, default=bench_cosim.FULL_STEPS, help="cosim: base steps per nodelets run")
     a = ap.parse_args()
     a.measurement = Measurement(sys.argv[1:])
+    if a.jobs is None:
+        a.jobs = 4 if a.what == "soak" else 1
+    if a.what == "soak":
+        return bench_soak.bench_soak(a)
     if a.what == "cosim":
         return bench_cosim.bench_cosim(a, REPO)
     return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient, "hybrid": bench_hybrid, "rates": bench_rates}[a.what](a)

@@ -14,9 +14,10 @@ wall_time_s, START to the end) and the participants' compute time (steady clock 
 """
 import json
 import os
-import socket
 import subprocess
 import sys
+
+from twin_tools.launch import ports
 
 DT_S = 0.01
 FULL_STEPS = 200000  # base steps per nodelets run of the full benchmark (the default of --steps)
@@ -55,12 +56,6 @@ def launch_xml(n, mode, variant, out, until_s):
     return "\n".join(x) + "\n"
 
 
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def run_one(root, n, mode, variant, steps):
     out = os.path.join(root, "%s_%s_%d" % (mode, variant, n))
     os.makedirs(out, exist_ok=True)
@@ -70,12 +65,13 @@ def run_one(root, n, mode, variant, steps):
     launch = os.path.join(out, "probe.launch")
     with open(launch, "w") as f:
         f.write(launch_xml(n, mode, variant, out, steps * DT_S))
-    port = free_port()
+    port, lock = ports.reserve_port(n)
     env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_IP="127.0.0.1",
                ROS_HOME=out)
     with open(os.path.join(out, "roslaunch.log"), "w") as log:
         subprocess.call(["roslaunch", "--no-summary", "-p", str(port), launch], env=env,
                         stdout=log, stderr=subprocess.STDOUT, timeout=900)
+    os.close(lock)
     if not os.path.exists(status):
         return None
     with open(status) as f:

@@ -3,33 +3,30 @@ port), read the status file and bags written by a run."""
 import json
 import os
 import signal
-import socket
 import subprocess
 import time
 from twin_tools import wiring
+from twin_tools.launch import ports
 
 # topics (twin_tools.wiring: the participants' topics.yaml)
 ENGINE_STATE = wiring.topic("engine", "state")
 VEHICLE_ENGINE_COMMAND = wiring.topic("vehicle", "engine_command")
 
 
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def start_launch(launch_file, out_dir, env=None, **args):
     """Starts roslaunch on a private master; returns the Popen (its own process group). `env`:
-    variables added to the environment of roslaunch and its nodes."""
+    variables added to the environment of roslaunch and its nodes. The master's port is reserved
+    (twin_tools.launch.ports: not one roslaunch's own XML-RPC server can take) for as long as the
+    Popen lives (its `port_lock`)."""
     os.makedirs(out_dir, exist_ok=True)
-    port = free_port()
+    port, lock = ports.reserve_port(os.getpid() % (ports.PORT_HI - ports.PORT_LO))
     env = dict(os.environ, **(env or {}), ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_HOME=out_dir)
     cmd = ["roslaunch", "--no-summary", "-p", str(port), launch_file, "out:=" + out_dir]
     cmd += ["%s:=%s" % (k, v) for k, v in args.items()]
     with open(os.path.join(out_dir, "roslaunch.log"), "w") as log:
-        return subprocess.Popen(cmd, env=env, stdout=log, stderr=subprocess.STDOUT,
-                                start_new_session=True)
+        proc = subprocess.Popen(cmd, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+    proc.port_lock = lock
+    return proc
 
 
 def stop(proc):

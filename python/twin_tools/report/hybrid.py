@@ -20,6 +20,9 @@ energy) and eta_charge = the run's own charging chain (battery chemical energy s
 of e-machine generating work at the crank). Both measured in the run itself; with dE = 0 the
 correction vanishes.
 """
+import json
+import os
+
 import numpy as np
 
 from twin_tools.units import DIESEL_LHV_J_KG
@@ -117,6 +120,53 @@ def hybrid_summary(data, summary):
         if eta_eng > 0 and eta_charge > 0:
             s["fuel_soc_corrected_kg"] = fuel - dE / (DIESEL_LHV_J_KG * eta_eng * eta_charge)
     return s
+
+
+# a baseline must have run under the same conditions as the hybrid it is compared with (the aux set
+# differs by design: the hybrid's carries the DC/DC load)
+COMPARABLE_KEYS = ("engine_model", "ambient_c", "start", "gearbox_set", "macro_step_s", "sim_time_s")
+
+
+class BaselineError(ValueError):
+    """A --baseline file that is no conventional run's summary under this run's conditions."""
+
+
+def read_baseline(path):
+    """The summary.json at `path` (scripts/twin report --baseline): read and checked to be a run's
+    summary, before any bag is read. BaselineError names the file and what is wrong."""
+    if os.path.isdir(path):
+        raise BaselineError("%s: a folder, not a summary.json (a run's is DIR/summary.json)" % path)
+    try:
+        with open(path) as f:
+            base = json.load(f)
+    except OSError as e:
+        raise BaselineError("%s: cannot be read: %s" % (path, e.strerror or e))
+    except ValueError as e:
+        raise BaselineError("%s: not JSON (%s): --baseline takes a run's summary.json" % (path, e))
+    if not isinstance(base, dict) or "scenario" not in base or "fuel_kg" not in base:
+        raise BaselineError("%s: not a run's summary.json (no scenario or fuel_kg; a run cut before it "
+                            "reported fuel has none)" % path)
+    return base
+
+
+def check_baseline(path, base, run):
+    """BaselineError unless `base` (read_baseline) is the conventional bus's run under the
+    conditions of the hybrid run summary `run` (COMPARABLE_KEYS), each difference named."""
+    if run.get("architecture") == "conventional":
+        raise BaselineError("--baseline: this run (%s) is the conventional bus; the saving is a hybrid's "
+                            "against it: report the hybrid's bag with this baseline" % run.get("scenario"))
+    if base.get("architecture") != "conventional":
+        raise BaselineError("%s: a run of %s (architecture %s): --baseline takes the conventional bus's "
+                            "summary (baseline_urban)" % (path, base.get("scenario"), base.get("architecture")))
+    diffs = []
+    for k in COMPARABLE_KEYS:
+        a, b = base.get(k), run.get(k)
+        same = (a == b or (isinstance(a, (int, float)) and isinstance(b, (int, float))
+                           and abs(a - b) <= 1e-6 * max(1.0, abs(b))))
+        if k in base and k in run and not same:
+            diffs.append("%s %s (baseline) vs %s (this run)" % (k, a, b))
+    if diffs:
+        raise BaselineError("%s: not run under this run's conditions: %s" % (path, "; ".join(diffs)))
 
 
 def saving(base, hyb):

@@ -245,13 +245,15 @@ INTERRUPTED = "interrupted"
 EXIT_INTERRUPTED = 130
 
 
-def report(out, s, status, files, diag_lines=()):
+def report(out, s, status, files, diag_lines=(), gaps=()):
     lines = ["# Run report: %s" % s["scenario"], ""]
     lines.append("Status: **%s**%s" % (status["status"], (" - " + status["message"]) if status["message"] else ""))
     lines.append("")
     if status["status"] == INTERRUPTED:
         lines += ["**Partial report**: the run was stopped from outside at t = %.2f s; every figure below "
                   "covers only the stretch 0 - %.2f s of the mission." % (status["sim_time_s"], status["sim_time_s"]), ""]
+    for g in gaps:  # a bag that holds less than its run (bag_coverage)
+        lines += ["**Incomplete bag**: " + g, ""]
     lines.append("| quantity | value |")
     lines.append("|---|---|")
     for k, v in s.items():
@@ -286,14 +288,60 @@ def report(out, s, status, files, diag_lines=()):
         fh.write("\n".join(lines) + "\n")
 
 
+# the output every participant publishes in every scenario (its other outputs depend on who else
+# runs: the vehicle commands the engine only without an EMS)
+PRIMARY_OUTPUT_KEYS = ("state", "command")
+
+
+def bag_coverage(data, status):
+    """What the bag lacks for a full report of its run: (the primary outputs of the participants
+    that ran -- status.json's compute_time_s -- that are not in the bag, sorted; the simulated time
+    the bag's states reach [s], or None without any)."""
+    expected = set()
+    for p in status.get("compute_time_s", {}):
+        if p not in wiring.participants():
+            continue  # the recorder, a participant the tools do not know
+        keys = [k for k in PRIMARY_OUTPUT_KEYS if k in wiring.declared(p)]
+        if keys:
+            expected.add(wiring.topic(p, keys[0]))
+    missing = sorted(t for t in expected if t not in data)
+    ends = [float(d["t"][-1]) for d in data.values() if len(d["t"])]
+    return missing, (max(ends) if ends else None)
+
+
+def coverage_lines(missing, until_s, sim_time_s):
+    """Warnings (report.md, stderr) for a bag that holds less than its run."""
+    lines = []
+    if missing:
+        lines.append("Outputs of this run's participants missing from the bag (not recorded, or filtered "
+                     "out): %s; what is computed from them is not reported." % ", ".join(missing))
+    if until_s is not None and sim_time_s and until_s < sim_time_s - 1.0:
+        lines.append("The bag's states end at t = %.1f s of the %.1f s the run simulated (a bag cut or "
+                     "filtered): the report covers 0-%.1f s only." % (until_s, sim_time_s, until_s))
+    return lines
+
+
 def report_from_bag(bag, out, baseline=None):
     """summary.json, report.md and plots in `out` from the bag alone; returns (status, summary).
-    baseline: a baseline run's summary.json -> fuel_saving_pct (hybrid, SOC-corrected)."""
+    baseline: a baseline run's summary.json -> fuel_saving_pct (hybrid, SOC-corrected); it must be
+    the conventional bus's under the same conditions (hybrid.BaselineError otherwise).
+    A bag without some of the run's topics, or ending before the run did, is reported for what it
+    holds, and says so (summary keys missing_topics, data_until_s, partial)."""
+    base = hybrid.read_baseline(baseline) if baseline else None
     info = read_run_info(bag)
     status = info["status"]
     data = read_bag(bag)
     s = summarise(info["scenario"], info["args"], status, data, info.get("stops_csv", ""),
                   info.get("stop_service") or ledger.STOP_SERVICE_DEFAULT)
+    missing, until_s = bag_coverage(data, status)
+    gaps = coverage_lines(missing, until_s, status["sim_time_s"])
+    if missing:
+        s["missing_topics"] = missing
+    if until_s is not None and until_s < status["sim_time_s"] - 1.0:
+        s["partial"] = True
+        s["data_until_s"] = until_s
+    for line in gaps:
+        print("twin: report: %s: %s" % (bag, line), file=sys.stderr)
     nodes = diagnostics.read_diagnostics(bag)
     warnings = diagnostics.warnings_list(nodes) if nodes is not None else None
     if warnings is not None:
@@ -301,9 +349,9 @@ def report_from_bag(bag, out, baseline=None):
     if status["status"] == INTERRUPTED:  # what ran, and that it is not the whole mission
         s["partial"] = True
         s["interrupted_at_s"] = status["sim_time_s"]
-    if baseline:
-        with open(baseline) as fh:
-            pct = hybrid.saving(json.load(fh), s)
+    if base is not None:
+        hybrid.check_baseline(baseline, base, s)
+        pct = hybrid.saving(base, s)
         if pct is not None:
             s["fuel_saving_pct"] = pct
     os.makedirs(out, exist_ok=True)
@@ -311,7 +359,7 @@ def report_from_bag(bag, out, baseline=None):
         json.dump(s, fh, indent=2)
         fh.write("\n")
     files = plots(out, data)
-    report(out, s, status, files, diagnostics.report_lines(nodes, warnings))
+    report(out, s, status, files, diagnostics.report_lines(nodes, warnings), gaps)
     return status, s
 
 
@@ -327,7 +375,7 @@ def main():
         out = a.out or os.path.dirname(os.path.abspath(a.bag))
         try:
             status, s = report_from_bag(a.bag, out, a.baseline)
-        except BagError as e:
+        except (BagError, hybrid.BaselineError) as e:
             print("twin: report: %s" % e, file=sys.stderr)
             return 2
         print("twin: report of %s written to %s" % (a.bag, out))

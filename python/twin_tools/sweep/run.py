@@ -8,7 +8,6 @@ sweep or another, picks it) and must be free when the run starts; `twin run` use
 HBT_ROS_PORT. A run's own output goes to its folder (twin.log: twin's console; roslaunch.log:
 every node); its exit code and wall time to sweep_task.json, which the table reads.
 """
-import fcntl
 import json
 import os
 import signal
@@ -18,35 +17,9 @@ import sys
 import threading
 import time
 
-PORT_LO, PORT_HI = 21000, 23000  # [port) range for the runs' masters (ephemeral ports start at 32768)
-LOCK_DIR = "/tmp/hbt_ros_ports"
+from twin_tools.launch.ports import reserve_port
+
 TASK_FILE = "sweep_task.json"
-
-
-def reserve_port(first):
-    """(port, lock fd): a free port of the range, locked for this process until the fd is closed."""
-    os.makedirs(LOCK_DIR, exist_ok=True)
-    try:
-        os.chmod(LOCK_DIR, 0o1777)
-    except OSError:
-        pass
-    n = PORT_HI - PORT_LO
-    for k in range(n):
-        port = PORT_LO + (first + k) % n
-        fd = os.open(os.path.join(LOCK_DIR, "%d.lock" % port), os.O_CREAT | os.O_RDWR, 0o666)
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            os.close(fd)
-            continue
-        with socket.socket() as s:
-            try:
-                s.bind(("", port))
-                return port, fd
-            except OSError:
-                pass
-        os.close(fd)
-    raise RuntimeError("no free port in [%d, %d)" % (PORT_LO, PORT_HI))
 
 
 def write_json(path, d):

@@ -16,9 +16,7 @@ namespace {
 // CPU clock: CLOCK_THREAD_CPUTIME_ID is a system call, 2.6 us per reading on this VM, i.e. 42 us
 // per base step for 8 participants -- most of a nodelet exchange (scripts/twin bench cosim).
 // On a thread that is not preempted the two agree; under load it counts the waiting too.
-double monotonicNow() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double monotonicNow() { return steadyNow_s(); }
 
 std::string seconds(Nanos t) {
   std::ostringstream os;
@@ -331,10 +329,13 @@ void ParticipantCore::stepWhileReady() {
     const Nanos t_next = t + period_ns_;
     try {
       const double c0 = monotonicNow();
+      watch_.enter(t, c0);
       h_.step(t, dt_s_);
+      watch_.leave();
       compute_s_ += monotonicNow() - c0;
       h_.publishOutputs(t_next);
     } catch (const std::exception& e) {
+      watch_.leave();
       fail("step " + std::to_string(n_) + " (t = " + std::to_string(t * 1e-9) + " s) failed: " + e.what());
       return;
     }

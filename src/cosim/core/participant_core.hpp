@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "cosim/core/protocol.hpp"
+#include "cosim/core/step_watch.hpp"
 
 namespace hbt::cosim::core {
 
@@ -96,7 +97,8 @@ struct PeriodRequest {
 
 class ParticipantCore {
  public:
-  ParticipantCore(std::string name, ParticipantHooks& hooks) : name_(std::move(name)), h_(hooks) {}
+  ParticipantCore(std::string name, ParticipantHooks& hooks)
+      : name_(std::move(name)), h_(hooks), watch_(name_) {}
 
   // --- declarations, during configure() ---
   void addInput(InputPort* in) { inputs_.push_back(in); }
@@ -173,6 +175,7 @@ class ParticipantCore {
 
   std::string name_;
   ParticipantHooks& h_;
+  StepWatch watch_;  // inside its model step: seen by the stepper of this process
   std::vector<InputPort*> inputs_;
   std::vector<Output> outputs_;
   PeriodRequest period_req_;

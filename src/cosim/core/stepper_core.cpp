@@ -6,6 +6,8 @@
 #include <set>
 #include <sstream>
 
+#include "cosim/core/step_watch.hpp"
+
 namespace hbt::cosim::core {
 namespace {
 // Wall time the stepper waits for every CLOSED before it completes without the missing ones [s]:
@@ -387,6 +389,8 @@ void StepperCore::timeout(double wall_s) {
   else
     os << "no participant progressed for " << cfg_.timeout_s << " s (done through t = " << seconds(t_) << ")";
   os << waits;
+  const std::string stuck = StepWatch::describe(steadyNow_s());  // mode:=nodelets: who blocks the thread
+  if (!stuck.empty()) os << "; " << stuck;
   finish(true, os.str(), wall_s);
 }
 

@@ -1,0 +1,184 @@
+"""scripts/twin bench soak [--runs 20] [--jobs 4] [--until S]: many full map-engine missions in a
+row, several at a time, to show that runs survive load and that nothing grows from one mission to
+the next. The matrix is both scenarios x ambients x payloads (SOAK_AMBIENTS_C, SOAK_PAYLOADS_KG),
+the scenarios alternating, cut to --runs. Each run is a `twin run` (nodelets: one manager process
+holds every participant, the stepper and the recorder) on its own master port. While it runs, the
+resident memory of its manager (VmRSS of /proc/<pid>/status, [MiB]) is sampled every second.
+
+Per run: status, wall time, whether a timeout ended it (a participant starved of CPU taken for
+dead: "did not answer", "no participant progressed", "start-up timed out"), whether every number
+of its summary.json is finite, the manager's RSS at the first sample after a fifth of the run's
+wall time and at the last sample before its end, and its peak (VmHWM). Verdict lines: failed runs,
+false timeouts, non-finite summaries, and the RSS of the first and the last mission of each
+scenario (flat: within RSS_FLAT_PCT)."""
+import json
+import math
+import os
+import subprocess
+import sys
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+from twin_tools.launch import ports
+from twin_tools.paths import REPO
+
+SOAK_AMBIENTS_C = (0, 10, 25, 32, 40)  # [degC]
+SOAK_PAYLOADS_KG = (500, 3000)         # [kg]: near empty, and about 40 standing passengers
+RSS_FLAT_PCT = 5.0   # [%] last mission's steady RSS against the first's, same scenario
+SAMPLE_PERIOD_S = 1.0  # [s] wall
+TIMEOUT_WORDS = ("did not answer", "no participant progressed", "start-up timed out")
+
+
+def matrix(n_runs):
+    runs = []
+    for payload in SOAK_PAYLOADS_KG:
+        for ambient in SOAK_AMBIENTS_C:
+            for scenario in ("baseline_urban", "hybrid_urban"):
+                runs.append((scenario, ambient, payload))
+    return runs[:n_runs]
+
+
+def manager_pid(port):
+    """The pid of the nodelet manager of the run on master port `port`, or None."""
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            with open("/proc/%s/cmdline" % pid, "rb") as f:
+                cmd = f.read()
+            if b"__name:=twin_manager" not in cmd:
+                continue
+            with open("/proc/%s/environ" % pid, "rb") as f:
+                env = f.read().split(b"\0")
+        except OSError:
+            continue
+        if any(e.startswith(b"ROS_MASTER_URI=") and e.endswith(b":%d" % port) for e in env):
+            return int(pid)
+    return None
+
+
+def memory_mib(pid):
+    """(VmRSS, VmHWM) of process pid [MiB], or None once it is gone."""
+    vals = {}
+    try:
+        with open("/proc/%d/status" % pid) as f:
+            for line in f:
+                if line.startswith(("VmRSS:", "VmHWM:")):
+                    key, kb = line.split()[:2]
+                    vals[key[:-1]] = int(kb) / 1024.0
+    except OSError:
+        return None
+    return (vals.get("VmRSS"), vals.get("VmHWM")) if "VmRSS" in vals else None
+
+
+def finite_numbers(obj):
+    """True if every number in a JSON value is finite."""
+    if isinstance(obj, dict):
+        return all(finite_numbers(v) for v in obj.values())
+    if isinstance(obj, list):
+        return all(finite_numbers(v) for v in obj)
+    if isinstance(obj, float):
+        return math.isfinite(obj)
+    return True
+
+
+def run_one(index, scenario, ambient, payload, root, until):
+    out = os.path.join(root, "%02d_%s_%dC_%dkg" % (index, scenario, ambient, payload))
+    port, lock = ports.reserve_port(index)
+    args = [os.path.join(REPO, "scripts", "twin"), "run", scenario, "--out", out, "mode:=nodelets",
+            "engine:=map", "ambient:=%g" % ambient, "payload:=%g" % payload]
+    if until:
+        args.append("until:=%g" % until)
+    env = dict(os.environ, HBT_SETUP_DONE="1", HBT_ROS_PORT=str(port))
+    samples, pid, peak = [], None, 0.0
+    t0 = time.time()
+    with open(out + ".log", "w") as log:
+        proc = subprocess.Popen(args, stdout=log, stderr=subprocess.STDOUT, env=env)
+        while proc.poll() is None:
+            time.sleep(SAMPLE_PERIOD_S)
+            if pid is None:
+                pid = manager_pid(port)
+            m = memory_mib(pid) if pid else None
+            if m:
+                samples.append((time.time() - t0, m[0]))
+                peak = max(peak, m[1] or 0.0)
+    wall = time.time() - t0
+    os.close(lock)
+    row = {"run": os.path.basename(out), "scenario": scenario, "ambient_c": ambient, "payload_kg": payload,
+           "rc": proc.returncode, "wall_s": wall, "samples": len(samples), "rss_peak_mib": peak}
+    try:
+        with open(os.path.join(out, "status.json")) as f:
+            st = json.load(f)
+        row["status"], row["message"] = st.get("status"), st.get("message", "")
+        row["sim_time_s"] = st.get("sim_time_s")
+    except (OSError, ValueError) as e:
+        row["status"], row["message"] = "no status", str(e)
+    try:
+        with open(os.path.join(out, "summary.json")) as f:
+            row["summary_finite"] = finite_numbers(json.load(f))
+    except (OSError, ValueError):
+        row["summary_finite"] = None
+    row["timeout"] = any(w in row.get("message", "") for w in TIMEOUT_WORDS)
+    steady = [r for t, r in samples if t >= 0.2 * wall]
+    row["rss_early_mib"] = steady[0] if steady else None
+    row["rss_late_mib"] = steady[-1] if steady else None
+    return row
+
+
+def bench_soak(a):
+    root = os.path.join(REPO, "results", "bench", "soak")
+    os.makedirs(root, exist_ok=True)
+    runs = matrix(a.runs)
+    jobs = max(1, a.jobs)
+    print("soak: %d missions, %d at a time, on %d CPUs" % (len(runs), jobs, os.cpu_count() or 0), file=sys.stderr)
+    t0 = time.time()
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(run_one, i, s, amb, p, root, a.until) for i, (s, amb, p) in enumerate(runs)]
+        rows = []
+        for f in futures:
+            rows.append(f.result())
+            r = rows[-1]
+            print("soak: %s %s (%.0f s wall)" % (r["run"], r["status"], r["wall_s"]), file=sys.stderr)
+    total = time.time() - t0
+    fmt = lambda v, f="%.1f": "-" if v is None else f % v
+    md = ["Full map-engine missions (%s), both scenarios alternating, ambients %s °C, payloads %s kg; %d at a "
+          "time (nodelets), each on its own master. RSS: the nodelet manager's resident memory [MiB] (one "
+          "process: every participant, the stepper, the recorder), at the first sample after a fifth of the run "
+          "and at the last sample; peak = VmHWM. Total wall time %.0f s."
+          % ("first %g s" % a.until if a.until else "whole Urban cycle", ", ".join(map(str, SOAK_AMBIENTS_C)),
+             ", ".join(map(str, SOAK_PAYLOADS_KG)), jobs, total), "",
+          "| run | status | wall [s] | timeout | summary finite | RSS early [MiB] | RSS late [MiB] | peak [MiB] |",
+          "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        md.append("| %s | %s | %.0f | %s | %s | %s | %s | %s |" % (
+            r["run"], r["status"], r["wall_s"], "yes" if r["timeout"] else "no",
+            {True: "yes", False: "NO", None: "-"}[r["summary_finite"]],
+            fmt(r["rss_early_mib"]), fmt(r["rss_late_mib"]), fmt(r["rss_peak_mib"])))
+    failed = [r for r in rows if r["status"] != "ok"]
+    timeouts = [r for r in rows if r["timeout"]]
+    not_finite = [r for r in rows if r["summary_finite"] is not True]
+    md += ["", "- failed runs: %d of %d%s" % (len(failed), len(rows), "".join(
+        "\n  - %s: %s" % (r["run"], r["message"]) for r in failed)),
+        "- runs ended by a timeout: %d" % len(timeouts),
+        "- summaries with a non-finite number (or none): %d" % len(not_finite)]
+    growth = [r["rss_late_mib"] - r["rss_early_mib"] for r in rows if r["rss_late_mib"] and r["rss_early_mib"]]
+    if growth:
+        md.append("- within a mission, late - early RSS: %+.1f to %+.1f MiB" % (min(growth), max(growth)))
+    flat = True
+    for scenario in ("baseline_urban", "hybrid_urban"):
+        mine = [r for r in rows if r["scenario"] == scenario and r["rss_late_mib"]]
+        if len(mine) < 2:
+            continue
+        first, last = mine[0], mine[-1]
+        change = 100.0 * (last["rss_late_mib"] / first["rss_late_mib"] - 1.0)
+        flat = flat and abs(change) <= RSS_FLAT_PCT
+        md.append("- %s: RSS late %.1f MiB in the first mission (%s), %.1f MiB in the last (%s): %+.1f %% "
+                  "(flat: within %g %%)" % (scenario, first["rss_late_mib"], first["run"], last["rss_late_mib"],
+                                           last["run"], change, RSS_FLAT_PCT))
+    print("\n".join(md))
+    a.measurement.write("soak", "Soak: %d full missions, %d at a time" % (len(rows), jobs), md,
+                        bool(a.until) or a.runs < 20)
+    with open(os.path.join(root, "soak.json"), "w") as f:
+        json.dump(rows, f, indent=2)
+    return 0 if not failed and not timeouts and not not_finite and flat else 1
