@@ -175,6 +175,15 @@ void Stepper::runEnded(bool aborted, const std::string& reason) {
   else ROS_INFO_STREAM("run finished: " << reason << " at t = " << core::toSec(core_->time()) << " s");
 }
 
+core::TaskState Stepper::taskState(const std::string& name, const std::string& process) {
+  const auto [host, pid] = core::splitProcessName(process);
+  const auto [own_host, own_pid] = core::splitProcessName(core::processName());
+  if (pid == 0 || host != own_host) return {};  // another host: cannot tell
+  if (pid != own_pid) return core::readTaskState(pid);
+  const long tid = core::StepWatch::threadOf(name);  // a nodelet of this manager: its thread
+  return tid > 0 ? core::readTaskState(pid, tid) : core::TaskState{};
+}
+
 void Stepper::complete() {
   timer_.stop();
   writeStatus(core_->aborted() ? "error" : "ok", core_->reason(), core::toSec(core_->time()),

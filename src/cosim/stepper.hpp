@@ -67,6 +67,8 @@ class Stepper : public core::StepperTransport {
   void runEnded(bool aborted, const std::string& reason) override;
   void warn(const std::string& msg) override { ROS_WARN_STREAM(msg); }
   void complete() override;
+  /// Its thread (mode:=nodelets: this process, StepWatch) or its process on this host.
+  core::TaskState taskState(const std::string& name, const std::string& process) override;
 
   ros::NodeHandle nh_, pnh_;
   ros::Publisher clock_pub_, cmd_pub_;

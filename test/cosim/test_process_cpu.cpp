@@ -57,3 +57,25 @@ TEST(ProcessCpu, ClockCountsBusyWorkAndNotSleep) {
   EXPECT_LT(processCpuSeconds() - c1, 0.1);
   EXPECT_GE(processCpuSeconds(), c1);
 }
+
+TEST(ProcessCpu, TaskStateOfThisProcessAndThread) {
+  // this thread is running while it reads its own state; its CPU time grows with work done
+  using hbt::cosim::core::readTaskState;
+  const long pid = static_cast<long>(getpid()), tid = hbt::cosim::core::currentThreadId();
+  const auto before = readTaskState(pid, tid);
+  ASSERT_TRUE(before.known);
+  EXPECT_EQ(before.state, 'R');
+  volatile double x = 0.0;
+  for (long i = 0; i < 200000000L && readTaskState(pid, tid).cpu_s < before.cpu_s + 0.05; ++i) x = x + 1e-9 * i;
+  EXPECT_GE(readTaskState(pid, tid).cpu_s, before.cpu_s + 0.05);
+  EXPECT_TRUE(readTaskState(pid).known);
+  EXPECT_FALSE(readTaskState(999999999L).known);  // beyond any pid_max: no such process
+}
+
+TEST(ProcessCpu, SplitProcessName) {
+  using hbt::cosim::core::splitProcessName;
+  EXPECT_EQ(splitProcessName("vm:1234"), (std::pair<std::string, long>("vm", 1234)));
+  EXPECT_EQ(splitProcessName("my:host:42").second, 42);
+  EXPECT_EQ(splitProcessName("?:battery").second, 0);
+  EXPECT_EQ(splitProcessName("nohost").second, 0);
+}

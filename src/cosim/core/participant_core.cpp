@@ -115,7 +115,12 @@ bool ParticipantCore::onTick() {
 }
 
 void ParticipantCore::watchStepper() {
-  const double silent_s = h_.wallNow() - last_heard_wall_;
+  const double now = h_.wallNow();
+  // its own thread did not run for a while (starved, or blocked by another participant's step on
+  // it): what the stepper sent meanwhile waits in its queue, unread -- count afresh
+  if (now - last_tick_wall_ > report_wall_s_) last_heard_wall_ = std::max(last_heard_wall_, now);
+  last_tick_wall_ = now;
+  const double silent_s = now - last_heard_wall_;
   const double limit_s = kStepperSilenceReportPeriods * report_wall_s_;
   if (silent_s <= limit_s) return;
   const Nanos t = static_cast<Nanos>(n_) * base_ns_;
@@ -240,7 +245,7 @@ void ParticipantCore::onCommand(const Command& c) {
       if (!configured_ || started_ || !checkPeriod(c.dt_s)) return;
       started_ = true;
       applyTable(c.table);
-      last_report_wall_ = last_heard_wall_;
+      last_report_wall_ = last_tick_wall_ = last_heard_wall_;
       try {
         h_.publishOutputs(0);  // the state at t_0, before anyone steps
       } catch (const std::exception& e) {

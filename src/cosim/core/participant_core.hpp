@@ -21,7 +21,9 @@
 //   QUERY            WAITING(n, what it waits for: which input at which stamp, or the grant)
 //   (silence)        onTick() while started: no command for kStepperSilenceReportPeriods report
 //                    periods since the later of the last command and its own last step -> the
-//                    stepper died or hung: close(t_n, true), then stepperLost(t_n, message)
+//                    stepper died or hung: close(t_n, true), then stepperLost(t_n, message). A gap
+//                    of more than a report period between two ticks (its own thread did not run:
+//                    starved, or blocked by another participant's step) starts the count afresh.
 //   FINISH k_end     publishes the deferred outputs an observer reads at t_end, then
 //                    close(t_end, false) once readyToClose(t_end); CLOSED
 //   ABORT            close(t_end, true) at once; CLOSED
@@ -188,6 +190,7 @@ class ParticipantCore {
   double base_dt_s_ = 0.0, dt_s_ = 0.0;  // base step, own macro step [s]
   double report_wall_s_ = 0.25, last_report_wall_ = 0.0;
   double last_heard_wall_ = 0.0;  // the later of the last command and the end of its last step [s]
+  double last_tick_wall_ = 0.0;   // its previous onTick() [s]
   Nanos base_ns_ = 0, period_ns_ = 0;
   uint64_t n_ = 0, horizon_ = 0, reported_ = 0;
   Nanos t_close_ = 0;

@@ -8,6 +8,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hbt::cosim::core {
@@ -32,6 +33,20 @@ struct ProcessCpu {
   double cpu_s = 0.0;           // the largest (latest) value reported from it
   double cpu_at_start_s = 0.0;  // the largest READY value: its set-up; cpu_s - this = stepping
 };
+
+/// What the kernel says of a process (tid = 0) or of one of its threads (/proc/<pid>[/task/<tid>]/stat):
+/// its scheduling state ('R' running or runnable, 'S' sleeping, 'D' waiting for a disk, 'T'
+/// stopped, ...) and its CPU time (user + system) [s]. known = false: no such process or thread.
+struct TaskState {
+  bool known = false;
+  char state = '?';
+  double cpu_s = 0.0;
+};
+TaskState readTaskState(long pid, long tid = 0);
+/// This thread's kernel id (gettid), read once per thread.
+long currentThreadId();
+/// "host:pid" -> (host, pid); pid 0 if it is not of that form.
+std::pair<std::string, long> splitProcessName(const std::string& process);
 
 /// Group the participants' reports (name -> report) by process. A participant that never
 /// reported a process is a process of its own named "?:<name>".

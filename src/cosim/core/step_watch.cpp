@@ -44,6 +44,13 @@ std::vector<StepWatch::InStep> StepWatch::inStep(double now_s) {
   return out;
 }
 
+long StepWatch::threadOf(const std::string& participant) {
+  std::lock_guard<std::mutex> lock(registryMutex());
+  for (const StepWatch* w : registry())
+    if (w->participant_ == participant) return w->tid_.load(std::memory_order_relaxed);
+  return 0;
+}
+
 std::string StepWatch::describe(double now_s) {
   std::ostringstream os;
   for (const InStep& s : inStep(now_s))

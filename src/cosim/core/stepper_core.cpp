@@ -160,6 +160,7 @@ void StepperCore::onStatus(const Status& s, double wall_s) {
       if (s.status != St::Done && s.status != St::Finished && s.status != St::Error) return;
       last_progress_ = wall_s;
       query_sent_ = false;
+      starved_wait_s_ = 0.0;
       if (s.status == St::Error) {
         p.failed = true;
         p.error = s.message;
@@ -333,10 +334,19 @@ void StepperCore::onTick(double wall_s) {
       return;
     }
     case Phase::Stepping:
-      if (wall_s - last_progress_ > cfg_.timeout_s) {
-        timeout(wall_s);
+      if (wall_s - last_progress_ > cfg_.timeout_s + starved_wait_s_) {
+        if (starved(wall_s)) {  // alive but starved of CPU: wait for it, say so once
+          if (starved_wait_s_ == 0.0)
+            tr_.warn("stepper: " + starved_names_ + " runnable but starved of CPU: waiting beyond the " +
+                     std::to_string(cfg_.timeout_s) + " s timeout");
+          starved_wait_s_ += 0.5 * cfg_.timeout_s;
+          probePeers(wall_s);
+        } else {
+          timeout(wall_s);
+        }
       } else if (wall_s - last_progress_ > 0.5 * cfg_.timeout_s && !query_sent_) {
         query_sent_ = true;
+        probePeers(wall_s);
         for (auto& kv : peers_) kv.second.answered = false;
         Command c;
         c.command = Cmd::Query;
@@ -367,6 +377,32 @@ void StepperCore::heartbeat(double wall_s) {
   tr_.sendCommand(last_grant_);  // idempotent: the horizons every participant already has
 }
 
+void StepperCore::probePeers(double wall_s) {
+  for (auto& kv : peers_) {
+    kv.second.probed = tr_.taskState(kv.first, kv.second.cpu.process);
+    kv.second.probed_wall = wall_s;
+  }
+}
+
+bool StepperCore::starved(double wall_s) {
+  if (starved_wait_s_ >= (kMaxStarvedWait_timeouts - 1.0) * cfg_.timeout_s) return false;
+  const uint64_t e = endStep();
+  std::string names;
+  bool any = false;
+  for (const auto& n : cfg_.participants) {
+    const Peer& p = peers_.at(n);
+    if (p.next >= e || (query_sent_ && p.answered)) continue;  // not silent
+    const TaskState now = tr_.taskState(n, p.cpu.process);
+    const bool runnable = now.known && p.probed.known && (now.state == 'R' || now.state == 'D');
+    const double dt = wall_s - p.probed_wall;
+    if (!runnable || !(dt > 0.0) || now.cpu_s - p.probed.cpu_s >= kStarvedCpuShare * dt) return false;
+    names += (any ? ", " : "") + n;
+    any = true;
+  }
+  if (any) starved_names_ = names;
+  return any;
+}
+
 void StepperCore::timeout(double wall_s) {
   std::string silent, waits;
   const uint64_t e = endStep();
@@ -391,6 +427,8 @@ void StepperCore::timeout(double wall_s) {
   os << waits;
   const std::string stuck = StepWatch::describe(steadyNow_s());  // mode:=nodelets: who blocks the thread
   if (!stuck.empty()) os << "; " << stuck;
+  if (starved_wait_s_ > 0.0)
+    os << "; waited " << starved_wait_s_ << " s more for " << starved_names_ << " (starved of CPU)";
   finish(true, os.str(), wall_s);
 }
 

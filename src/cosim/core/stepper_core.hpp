@@ -38,8 +38,12 @@
 // Abort paths: an ERROR status (Announce/Sync: at once; Stepping: at its step, see above),
 // start-up timeout (someone never announces or links never ready within startup_timeout_s), step
 // timeout (no participant reported progress for timeout_s: at timeout_s / 2 a QUERY asks everyone
-// what it waits for; the ones that did not answer are named as died or hung). Wall time comes
-// from the caller (onStatus/onTick arguments), so tests drive a simulated wall clock.
+// what it waits for; the ones that did not answer are named as died or hung). Starved is not
+// dead: when every silent one is runnable (or waiting for a disk) yet got less than
+// kStarvedCpuShare of the wall time as CPU since the last probe (transport's taskState), the
+// timeout waits another timeout_s / 2, up to kMaxStarvedWait_timeouts in all, and says so.
+// Wall time comes from the caller (onStatus/onTick arguments), so tests drive a simulated wall
+// clock.
 #pragma once
 #include <limits>
 #include <map>
@@ -82,6 +86,9 @@ class StepperTransport {
   virtual void warn(const std::string& msg) {}
   /// Everything is over (status can be written, the process may shut down).
   virtual void complete() = 0;
+  /// The kernel's view of participant `name` (its thread, or its process "host:pid" when on this
+  /// host): to tell one starved of CPU from one that died or hangs. Default: unknown.
+  virtual TaskState taskState(const std::string& name, const std::string& process) { return {}; }
 };
 
 enum class Phase { Announce, Sync, Stepping, Closing, Done };
@@ -89,6 +96,11 @@ enum class Phase { Announce, Sync, Stepping, Closing, Done };
 class StepperCore {
  public:
   static constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
+  /// Longest wait for starved participants, in timeouts (a machine that starves a runnable
+  /// thread for 10 s is not one to run on).
+  static constexpr double kMaxStarvedWait_timeouts = 10.0;
+  /// Starved: less CPU than this share of the wall time since the last probe.
+  static constexpr double kStarvedCpuShare = 0.25;
   struct Peer {
     St last_status = St::Announce;
     bool has_status = false, announced = false, observer = false;
@@ -99,6 +111,8 @@ class StepperCore {
     uint32_t multiple = 1, group = 0;
     double compute_s = 0.0, mission_duration_s = 0.0;
     CpuReport cpu;               // of its process (Status::process_cpu_s): last report, at READY
+    TaskState probed;            // its thread or process at the last probe (QUERY, each wait)
+    double probed_wall = 0.0;    // [s]
     std::vector<std::string> outputs, inputs;
     std::string waiting_for;    // start-up: links; stepping: the answer to the last QUERY
     std::string error;          // its ERROR message (stepping)
@@ -139,6 +153,10 @@ class StepperCore {
   void update(double wall_s);
   void timeout(double wall_s);
   void heartbeat(double wall_s);
+  /// Probes every peer (taskState) and keeps the result as the baseline for starved().
+  void probePeers(double wall_s);
+  /// True if every participant that did not answer is starved of CPU (see above).
+  bool starved(double wall_s);
   void finish(bool aborted, const std::string& reason, double wall_s);
   void complete();
   void clockAt(Nanos t, double wall_s);
@@ -158,6 +176,8 @@ class StepperCore {
   Command last_grant_;           // the latest GRANT (sent again as the heartbeat)
   double last_sent_wall_ = 0.0;  // wall time of the latest GRANT or QUERY [s]
   uint64_t heartbeats_ = 0;
+  double starved_wait_s_ = 0.0;  // wait beyond timeout_s granted to starved participants [s]
+  std::string starved_names_;    // who was starved (for the message)
   std::string error_reason_, finished_by_;
   bool aborted_ = false, query_sent_ = false;
   std::string reason_;
