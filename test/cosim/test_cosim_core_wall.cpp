@@ -361,3 +361,29 @@ TEST(CosimCore, StarvedForTenTimeoutsIsAbortedAndSaysSo) {
   EXPECT_NEAR(ended, 0.1 + StepperCore::kMaxStarvedWait_timeouts * 1.0, 0.2);
   EXPECT_NE(st.reason().find("(starved of CPU)"), std::string::npos) << st.reason();
 }
+
+TEST(CosimCore, TheStepperAwayJudgesNobody) {
+  // the stepper's own thread does not run from 0.2 s to 3.2 s of wall (starved, or blocked on a
+  // full console pipe): its first tick after that does not abort -- the participants' statuses
+  // of those 3 s are still unread behind it -- and the run goes on when they are read
+  ProbedLog tr;
+  StepperCore st(config({"a", "b"}, 100.0), tr);
+  st.begin(0.0);
+  for (const char* n : {"a", "b"}) st.onStatus(status(n, St::Announce, 0), 0.0);
+  st.onTick(0.05);
+  for (const char* n : {"a", "b"}) {
+    Status ready = status(n, St::Ready, 1);
+    ready.step_multiple = 1;
+    st.onStatus(ready, 0.06);
+  }
+  st.onTick(0.1);
+  st.onTick(0.15);
+  st.onTick(0.2);
+  st.onTick(3.2);
+  EXPECT_EQ(st.phase(), Phase::Stepping) << st.reason();
+  for (const char* n : {"a", "b"}) st.onStatus(status(n, St::Done, 50), 3.21);
+  for (double w = 3.25; w < 3.9; w += 0.05) st.onTick(w);
+  EXPECT_EQ(st.phase(), Phase::Stepping) << st.reason();
+  for (double w = 3.9; w < 6.0 && st.phase() == Phase::Stepping; w += 0.05) st.onTick(w);
+  EXPECT_TRUE(st.aborted());  // silent for a timeout while the stepper ran: as before
+}

@@ -297,6 +297,15 @@ void StepperCore::update(double wall_s) {
 }
 
 void StepperCore::onTick(double wall_s) {
+  // The stepper itself did not run for a while (its thread starved, or blocked writing to a full
+  // console pipe): what arrived meanwhile waits unread behind this tick. The wall time it was
+  // away counts for nobody's timeout.
+  if (last_tick_wall_ >= 0.0 && wall_s - last_tick_wall_ > heartbeatPeriod_s()) {
+    const double away_s = wall_s - last_tick_wall_;
+    last_progress_ += away_s;
+    phase_since_ += away_s;
+  }
+  last_tick_wall_ = wall_s;
   switch (phase_) {
     case Phase::Announce:
     case Phase::Sync: {

@@ -41,7 +41,9 @@
 // what it waits for; the ones that did not answer are named as died or hung). Starved is not
 // dead: when every silent one is runnable (or waiting for a disk) yet got less than
 // kStarvedCpuShare of the wall time as CPU since the last probe (transport's taskState), the
-// timeout waits another timeout_s / 2, up to kMaxStarvedWait_timeouts in all, and says so.
+// timeout waits another timeout_s / 2, up to kMaxStarvedWait_timeouts in all, and says so. A
+// gap of more than timeout_s / 4 between two ticks (the stepper itself did not run) moves every
+// timer on by that gap: statuses that arrived meanwhile are read before anyone is judged.
 // Wall time comes from the caller (onStatus/onTick arguments), so tests drive a simulated wall
 // clock.
 #pragma once
@@ -176,6 +178,7 @@ class StepperCore {
   Command last_grant_;           // the latest GRANT (sent again as the heartbeat)
   double last_sent_wall_ = 0.0;  // wall time of the latest GRANT or QUERY [s]
   uint64_t heartbeats_ = 0;
+  double last_tick_wall_ = -1.0;  // the previous onTick [s]; -1: none yet
   double starved_wait_s_ = 0.0;  // wait beyond timeout_s granted to starved participants [s]
   std::string starved_names_;    // who was starved (for the message)
   std::string error_reason_, finished_by_;
