@@ -37,6 +37,9 @@ class DiskFull(unittest.TestCase):
 
     @classmethod
     def tearDownClass(cls):
+        for line in cls.text.splitlines():  # what the user saw (the test log keeps it)
+            if line.startswith("twin: "):
+                print(line)
         subprocess.run(["umount", cls.mnt])
         shutil.rmtree(cls.tmp, ignore_errors=True)
 

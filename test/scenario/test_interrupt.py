@@ -46,6 +46,11 @@ class Interrupted(unittest.TestCase):
 
     @classmethod
     def tearDownClass(cls):
+        for name, (out, rc, wall, text) in cls.runs.items():  # what the user saw (the test log keeps it)
+            print("%s: exit %s, %.1f s after the signal" % (name, rc, wall))
+            for line in text.splitlines():
+                if line.startswith("twin: "):
+                    print("  " + line)
         shutil.rmtree(cls.tmp, ignore_errors=True)
 
     def test_exit_status_and_status_file(self):

@@ -53,7 +53,8 @@ def manager_pid(port):
                 env = f.read().split(b"\0")
         except OSError:
             continue
-        if any(e.startswith(b"ROS_MASTER_URI=") and e.endswith(b":%d" % port) for e in env):
+        # roslaunch hands its nodes the master's URI with a trailing slash
+        if any(e.startswith(b"ROS_MASTER_URI=") and e.rstrip(b"/").endswith(b":%d" % port) for e in env):
             return int(pid)
     return None
 
