@@ -21,6 +21,12 @@ class StepperNodelet : public nodelet::Nodelet {
   }
   std::shared_ptr<hbt::cosim::LockstepQueue> queue_;  // declared first: outlives the stepper
   std::unique_ptr<hbt::cosim::Stepper> stepper_;
+
+ public:
+  ~StepperNodelet() override {
+    if (queue_) queue_->stopThread();  // first: no timer or status callback beside its destructor
+    stepper_.reset();
+  }
 };
 }  // namespace hbt::nodelets
 PLUGINLIB_EXPORT_CLASS(hbt::nodelets::StepperNodelet, nodelet::Nodelet)

@@ -61,7 +61,12 @@ class LockstepQueue {
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
     return true;
   }
-  ~LockstepQueue() {
+  ~LockstepQueue() { stopThread(); }
+  /// No callback of this queue runs after this returns (the one in progress is waited for):
+  /// called by a nodelet before its participant is destroyed, since a nodelet unloads from the
+  /// manager's thread while the queue's thread may still be delivering to it. At shutdown only:
+  /// the other nodelets of the queue get no callback from then on either.
+  void stopThread() {
     stop_ = true;
     if (thread_.get_id() == std::this_thread::get_id()) thread_.detach();
     else if (thread_.joinable()) thread_.join();
@@ -120,6 +125,12 @@ int runNode(int argc, char** argv, const char* default_name) {
 
 template <class P>
 class ParticipantNodelet : public nodelet::Nodelet {
+ public:
+  ~ParticipantNodelet() override {
+    if (queue_) queue_->stopThread();  // first: no callback into the participant being destroyed
+    participant_.reset();
+  }
+
  protected:
   void onInit() override {
     queue_ = LockstepQueue::acquire(LockstepQueue::threadName(getPrivateNodeHandle()));

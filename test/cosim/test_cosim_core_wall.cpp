@@ -300,9 +300,8 @@ struct ProbedLog : CommandLog {
   void complete() override { completed = true; }
 };
 
-/// a and b started, then neither reports again (both waiting on a starved or dead thread, as the
-/// participants of one nodelet thread do). Their kernel view: state, CPU per second of wall.
-double runWithSilentA(ProbedLog& tr, StepperCore& st, char a_state, double a_cpu_per_s, double until_wall) {
+/// a and b announced, ready, and stepping from 0.1 s of wall on.
+void startAB(StepperCore& st) {
   st.begin(0.0);
   for (const char* n : {"a", "b"}) st.onStatus(status(n, St::Announce, 0), 0.0);
   st.onTick(0.05);
@@ -312,6 +311,12 @@ double runWithSilentA(ProbedLog& tr, StepperCore& st, char a_state, double a_cpu
     st.onStatus(ready, 0.06);
   }
   st.onTick(0.1);
+}
+
+/// a and b started, then neither reports again (both waiting on a starved or dead thread, as the
+/// participants of one nodelet thread do). Their kernel view: state, CPU per second of wall.
+double runWithSilentA(ProbedLog& tr, StepperCore& st, char a_state, double a_cpu_per_s, double until_wall) {
+  startAB(st);
   st.onStatus(status("a", St::Done, 1), 0.1);
   st.onStatus(status("b", St::Done, 1), 0.1);
   for (double w = 0.15; w < until_wall && st.phase() == Phase::Stepping; w += 0.05) {
@@ -368,15 +373,7 @@ TEST(CosimCore, TheStepperAwayJudgesNobody) {
   // of those 3 s are still unread behind it -- and the run goes on when they are read
   ProbedLog tr;
   StepperCore st(config({"a", "b"}, 100.0), tr);
-  st.begin(0.0);
-  for (const char* n : {"a", "b"}) st.onStatus(status(n, St::Announce, 0), 0.0);
-  st.onTick(0.05);
-  for (const char* n : {"a", "b"}) {
-    Status ready = status(n, St::Ready, 1);
-    ready.step_multiple = 1;
-    st.onStatus(ready, 0.06);
-  }
-  st.onTick(0.1);
+  startAB(st);
   st.onTick(0.15);
   st.onTick(0.2);
   st.onTick(3.2);

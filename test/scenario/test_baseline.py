@@ -2,8 +2,8 @@
 """Scenario tests of baseline_urban on short stretches of the Urban mission (until:=...):
 nodes vs nodelets and repeated runs (with report windows of 50, 1 and 37 base steps) give
 bit-identical bags; the driveline energy balance of the
-run closes and the engine's own brake work agrees with the work the vehicle received; a killed
-node stops the run within 2 s naming it with a readable bag; bad input (missing, malformed or
+run closes and the engine's own brake work agrees with the work the vehicle received (a killed
+node: test_faults.py, every participant); bad input (missing, malformed or
 truncated cycle, negative mass, unknown key, NaN, a macro step that is not a multiple of the base
 step, a bad thread name, a bad `order`) is rejected before the first step with a message naming the file and the key;
 the engine at twice the base step, stepped after the vehicle, runs and is recorded by its held
@@ -11,10 +11,8 @@ value."""
 import json
 import os
 import shutil
-import signal
 import subprocess
 import tempfile
-import time
 import unittest
 
 from twin_tools.launch import run_util
@@ -349,26 +347,6 @@ class Failures(unittest.TestCase):
         ms = 1000000
         # the engine's state held between its steps: stamped floor(t / 20 ms) * 20 ms
         self.assertEqual(got, [(max(1, i * 10 * ms), i * 10 * ms // (20 * ms) * 20 * ms) for i in range(501)])
-
-    def test_killed_node_stops_run(self):
-        out = os.path.join(self.tmp, "kill")
-        proc = run_util.start_launch(LAUNCH, out, until=0, mode="nodes")  # a process to kill
-        self.addCleanup(run_util.stop, proc)
-        pid = run_util.pid_of_node(proc, "engine")
-        # wait until the run is stepping (the vehicle wrote its profile, then some wall time)
-        time.sleep(6.0)
-        self.assertIsNone(proc.poll())
-        t_kill = time.time()
-        os.kill(pid, signal.SIGKILL)
-        run_util.wait(proc, 60)
-        st = run_util.read_status(out)
-        delay = os.path.getmtime(os.path.join(out, "status.json")) - t_kill
-        self.assertEqual(st["status"], "error")
-        self.assertIn("engine", st["message"])
-        self.assertLess(delay, 2.0)
-        self.assertGreater(st["steps"], 10)
-        msgs = run_util.bag_messages(os.path.join(out, "run.bag"))
-        self.assertGreater(len(msgs), 60)
 
 
 if __name__ == "__main__":

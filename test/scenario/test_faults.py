@@ -26,7 +26,7 @@ LAUNCH = os.path.join(REPO, "launch", "hybrid_urban.launch")
 PARTICIPANTS = ("vehicle", "engine", "aftertreatment", "cooling", "ems", "emachine", "battery", "recorder")
 TIMEOUT_S = 1.0
 MODEL_FAULT_AT_S = 3.0  # [s] simulated: when a model's step fails
-MODEL_FAULT_JOBS = 3    # runs at a time
+MODEL_FAULT_JOBS = 4    # runs at a time
 DEVEL_LIB = os.path.join(REPO, "build", "devel", "lib")  # scripts/twin builds into <repo>/build
 FAULT_NODELETS = os.path.join(REPO, "build", "fault_lib", "libhbt_nodelets.so")
 # what each participant's NaN shows as: its output topic and field (test/faults/fault_hooks.cpp)
@@ -135,14 +135,14 @@ class Faults(unittest.TestCase):
         self.table.append((name, signal.Signals(sig).name, st["message"][:90], delay))
 
     def test_each_participant_killed_and_hung(self):
-        # two runs at a time (the delays are measured from each run's own signal)
+        # three runs at a time (the delays are measured from each run's own signal)
         cases = [(name, sig) for sig in (signal.SIGKILL, signal.SIGSTOP) for name in PARTICIPANTS]
 
         def one(case):
             name, sig = case
             # the recorder: late enough that its bag holds whole chunks (rosbag writes 768 KiB chunks)
             return case, inject(self.tmp, name, sig, after_s=200.0 if name == "recorder" else 10.0)
-        with ThreadPoolExecutor(2) as pool:
+        with ThreadPoolExecutor(3) as pool:
             results = dict(pool.map(one, cases))
         for name, sig in cases:
             with self.subTest(name=name, signal=signal.Signals(sig).name):

@@ -19,7 +19,7 @@ import unittest
 
 import numpy as np
 
-from twin_tools.launch import run_util
+from twin_tools.launch import ports, run_util
 from twin_tools.report import postprocess
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -99,7 +99,8 @@ class LiveView(unittest.TestCase):
 
     def test_1_control_without_viz_node(self):
         """rviz alone: the check must fail (no bus, no gauge colours)."""
-        port = run_util.free_port()
+        port, lock = ports.reserve_port(os.getpid() % (ports.PORT_HI - ports.PORT_LO))
+        self.addCleanup(os.close, lock)
         env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_HOME=self.tmp)
         master = subprocess.Popen(["rosmaster", "--core", "-p", str(port)], env=env, start_new_session=True,
                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

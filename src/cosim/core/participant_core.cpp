@@ -126,8 +126,8 @@ void ParticipantCore::watchStepper() {
   const Nanos t = static_cast<Nanos>(n_) * base_ns_;
   std::ostringstream os;
   os << "no command from the stepper for " << std::fixed << std::setprecision(1) << silent_s
-     << std::defaultfloat << " s (its heartbeat comes every " << report_wall_s_ << " s; the limit is "
-     << limit_s << " s): the stepper died or hung; closed at t = " << seconds(t);
+     << std::defaultfloat << std::setprecision(6) << " s (its heartbeat comes every " << report_wall_s_
+     << " s; the limit is " << limit_s << " s): the stepper died or hung; closed at t = " << seconds(t);
   const std::string message = os.str();
   h_.logError(name_ + ": " + message);
   try {
