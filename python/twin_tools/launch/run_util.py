@@ -29,14 +29,25 @@ def start_launch(launch_file, out_dir, env=None, **args):
     return proc
 
 
+def release_port(proc):
+    """Frees the master port a finished launch held (start_launch)."""
+    lock = getattr(proc, "port_lock", None)
+    if lock is not None:
+        os.close(lock)
+        proc.port_lock = None
+
+
 def stop(proc):
-    """Ends a launched run (and its nodes) if it is still going: for test clean-up."""
+    """Ends a launched run (and its nodes) if it is still going, and frees its port: for test
+    clean-up."""
     if proc.poll() is None:
         try:
             os.killpg(proc.pid, signal.SIGINT)
             proc.wait(timeout=20)
         except (ProcessLookupError, subprocess.TimeoutExpired):
             os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait(timeout=20)
+    release_port(proc)
 
 
 def wait(proc, timeout_s):
@@ -53,7 +64,10 @@ def run_launch(launch_file, out_dir, timeout_s=300, **args):
     the end of its roslaunch.log (to stderr, for the test log: why a node did not answer)."""
     import sys
     proc = start_launch(launch_file, out_dir, **args)
-    wait(proc, timeout_s)
+    try:
+        wait(proc, timeout_s)
+    finally:
+        release_port(proc)
     st = read_status(out_dir)
     if st.get("status") != "ok":
         with open(os.path.join(out_dir, "roslaunch.log"), errors="replace") as f:
