@@ -17,6 +17,8 @@ from twin_tools.launch import run_util
 from twin_tools.paths import REPO
 
 TWIN = os.path.join(REPO, "scripts", "twin")
+# report window W of the lock-step [s]: window_steps x dt_s, the defaults of launch/include/urban.launch
+WINDOW_S = 50 * 0.01
 
 
 class Interrupted(unittest.TestCase):
@@ -68,13 +70,21 @@ class Interrupted(unittest.TestCase):
         for name, (out, _, _, _) in self.runs.items():
             st = run_util.read_status(out)
             self.assertFalse(os.path.exists(os.path.join(out, "run.bag.active")), name)
-            last = 0.0
+            last, dist_at_x = 0.0, None
             with rosbag.Bag(os.path.join(out, "run.bag")) as b:
                 for _, m, _ in b.read_messages(topics=["/vehicle/state"]):
-                    last = max(last, m.header.stamp.to_sec())
-            # recorded every 0.1 s up to the time every participant was done through
-            self.assertLessEqual(last, st["sim_time_s"] + 1e-9, name)
+                    t = m.header.stamp.to_sec()
+                    last = max(last, t)
+                    if t <= st["sim_time_s"] + 1e-9:
+                        dist_at_x = m.distance_m
+            # recorded every 0.1 s up to the time every participant was done through (X); some
+            # participants may have run up to two report windows further (the grant horizon)
             self.assertGreater(last, st["sim_time_s"] - 0.2 - 1e-9, name)
+            self.assertLessEqual(last, st["sim_time_s"] + 2 * WINDOW_S + 1e-9, name)
+            # the partial report covers 0..X, the same stretch for every topic
+            with open(os.path.join(out, "summary.json")) as f:
+                s = json.load(f)
+            self.assertEqual(s["distance_km"], dist_at_x / 1000.0, name)
 
     def test_report_of_the_stretch_that_ran_says_it_is_partial(self):
         for name, (out, _, _, _) in self.runs.items():

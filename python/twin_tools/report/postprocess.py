@@ -79,6 +79,17 @@ def read_bag(path):
     return {k: {f: np.asarray(v) for f, v in d.items()} for k, d in data.items()}
 
 
+def cut_after(data, t_s):
+    """The samples stamped at or before t_s [s]. An interrupted run's status gives the time every
+    participant was done through; the bag may hold up to one grant window (2 reports) beyond it
+    from some participants only, so a partial report covers 0..t_s, the same stretch for all."""
+    out = {}
+    for topic, d in data.items():
+        keep = d["t"] <= t_s + 1e-9
+        out[topic] = {f: v[keep] for f, v in d.items()}
+    return out
+
+
 def launch_args(pairs):
     out = {}
     for p in pairs:
@@ -331,6 +342,8 @@ def report_from_bag(bag, out, baseline=None):
     info = read_run_info(bag)
     status = info["status"]
     data = read_bag(bag)
+    if status["status"] == INTERRUPTED:
+        data = cut_after(data, status["sim_time_s"])
     s = summarise(info["scenario"], info["args"], status, data, info.get("stops_csv", ""),
                   info.get("stop_service") or ledger.STOP_SERVICE_DEFAULT)
     missing, until_s = bag_coverage(data, status)
