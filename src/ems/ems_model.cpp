@@ -7,8 +7,9 @@
 
 namespace hbt::ems {
 
-EmsModel::EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_supported)
-    : p_(p), fuel_(fuel), stop_start_supported_(stop_start_supported) {
+EmsModel::EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_supported,
+                   const EmLimitModel* em_limits)
+    : p_(p), fuel_(fuel), stop_start_supported_(stop_start_supported), em_limits_(em_limits) {
   reset();
 }
 
@@ -28,11 +29,26 @@ double EmsModel::equivalenceFactor(double soc) const {
 const EmsDecision& EmsModel::step(double dt, const EmsInputs& in) {
   const double vals[] = {in.crank_torque_demand_Nm, in.wheel_brake_demand_Nm, in.engine_speed_rad_s,
                          in.crank_to_wheel_ratio, in.engine_max_torque_Nm, in.engine_min_torque_Nm,
-                         in.em_max_torque_Nm, in.em_min_torque_Nm, in.soc, in.battery_T_K,
-                         in.discharge_limit_W, in.charge_limit_W, in.coolant_T_K, in.scr_T_K};
+                         in.em_max_torque_Nm, in.em_min_torque_Nm, in.em_winding_T_K, in.em_magnet_T_K,
+                         in.dc_voltage_V, in.soc, in.battery_T_K, in.discharge_limit_W,
+                         in.charge_limit_W, in.coolant_T_K, in.scr_T_K};
   for (double x : vals)
     if (!std::isfinite(x)) throw ModelDivergence("ems", "inputs", "non-finite input");
   if (!(dt > 0.0)) throw ModelDivergence("ems", "dt", "must be > 0");
+  return decide(dt, withLiveLimits(in));
+}
+
+EmsInputs EmsModel::withLiveLimits(const EmsInputs& in) const {
+  EmsInputs x = in;
+  if (em_limits_)
+    em_limits_->liveLimits(std::max(0.0, in.engine_speed_rad_s), in.dc_voltage_V, in.em_winding_T_K,
+                           in.em_magnet_T_K, x.em_max_torque_Nm, x.em_min_torque_Nm);
+  if (!std::isfinite(x.em_max_torque_Nm) || !std::isfinite(x.em_min_torque_Nm))
+    throw ModelDivergence("ems", "e-machine limit model", "non-finite live limit");
+  return x;
+}
+
+const EmsDecision& EmsModel::decide(double dt, const EmsInputs& in) {
   const auto& ss = p_.stop_start;
   const bool engine_warm = in.coolant_T_K >= p_.warmup.coolant_warm_K;
   const bool warm = engine_warm && in.scr_T_K >= p_.warmup.scr_warm_K;

@@ -22,7 +22,13 @@
 //    T_lo = max(T_em,min live, -P_chg / (ω η_g), T_d - T_e,max)   (0 above soc_max)
 //    f_T = clamp((T_zero - T_bat)/(T_zero - T_start), 0, 1): assist fades 40 -> 45 °C.
 //    ṁ_f(ω, T) is the controller's engine model (a steady fuel map, FuelModel); the plant may be
-//    the map or the 1D engine. The minimiser of J is taken (ties: the smallest |T_em|); |T_em| <
+//    the map or the 1D engine.
+//    T_em,max/min live: the limits valid for the step commanded. With an EmLimitModel they are
+//    evaluated at this step's crank speed ω, the DC voltage the e-machine will use (the battery's
+//    latest terminal voltage) and its winding/magnet temperatures at the step start: the very
+//    limits the e-machine clamps with, so a request inside them is never clamped. Without one,
+//    the limits the e-machine published for the previous step (at its speed and voltage: a
+//    request may then exceed the live limit by the change over one step). The minimiser of J is taken (ties: the smallest |T_em|); |T_em| <
 //    min_boost_torque is set to 0.
 // Every decision carries a Mode and a Reason (published; see the enums).
 #pragma once
@@ -42,6 +48,16 @@ class FuelModel {
  public:
   virtual ~FuelModel() = default;
   virtual double fuelRate_kg_s(double speed_rad_s, double torque_Nm) const = 0;
+};
+
+/// The controller's model of the e-machine's live torque limits at the crank [Nm]: max >= 0 and
+/// min <= 0 at crank speed [rad/s], DC voltage [V], winding and magnet temperatures [K].
+/// Implemented over the e-machine model by the node (the function the e-machine clamps with).
+class EmLimitModel {
+ public:
+  virtual ~EmLimitModel() = default;
+  virtual void liveLimits(double crank_speed_rad_s, double dc_voltage_V, double winding_T_K, double magnet_T_K,
+                          double& max_Nm, double& min_Nm) const = 0;
 };
 
 enum class Mode : uint8_t { EngineOnly = 0, Boost = 1, Regen = 2, LoadPointShift = 3, Stopped = 4, Cranking = 5 };
@@ -70,8 +86,12 @@ struct EmsInputs {
   double crank_to_wheel_ratio = 0.0;  // i_g i_a when locked, else 0
   bool stopped = false, start_request = false;
   double engine_max_torque_Nm = 0.0, engine_min_torque_Nm = 0.0;
-  // from the e-machine (live limits at the crank)
+  // from the e-machine: its published live limits at the crank [Nm] (of the previous step) and
+  // its temperatures at the step start [K]
   double em_max_torque_Nm = 0.0, em_min_torque_Nm = 0.0;
+  double em_winding_T_K = 298.15, em_magnet_T_K = 298.15;
+  // DC voltage the e-machine steps with: the battery's latest terminal voltage [V]
+  double dc_voltage_V = 48.0;
   // from the battery
   double soc = 0.5, battery_T_K = 298.15, discharge_limit_W = 0.0, charge_limit_W = 0.0;
   // warm-up state (cooling, aftertreatment); without the thermal nodes: warm
@@ -95,7 +115,10 @@ struct EmsDecision {
 
 class EmsModel {
  public:
-  EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_supported = true);
+  /// em_limits: the e-machine's limit model (nullptr: the published limits, see above); it must
+  /// outlive the EmsModel.
+  EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_supported = true,
+           const EmLimitModel* em_limits = nullptr);
   /// Engine running, counters and the SOC integral cleared.
   void reset();
   /// Decides the split for the next step of length dt_s [s]. Throws ModelDivergence on
@@ -106,12 +129,16 @@ class EmsModel {
 
  private:
   enum class State { Running, Stopped, Cranking };
+  /// The inputs with the e-machine's limits valid for this step (EmLimitModel, see above).
+  EmsInputs withLiveLimits(const EmsInputs& in) const;
+  const EmsDecision& decide(double dt_s, const EmsInputs& in);
   void regen(const EmsInputs& in);
   void ecms(const EmsInputs& in, bool warm, double dt_s);
 
   EmsParams p_;
   const FuelModel& fuel_;
   bool stop_start_supported_ = true;
+  const EmLimitModel* em_limits_ = nullptr;
   State state_ = State::Running;
   double soc_integral_ = 0.0, on_time_s_ = kRunningForever_s, crank_time_s_ = 0.0;
   EmsDecision d_;

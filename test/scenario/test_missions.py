@@ -6,7 +6,8 @@ mission invariants against what is independent of the run: the run ended "end of
 distance the cycle file gives; every balance of the summary closed (closure < 1e-9); no warning
 above 0 degC, and at 0 degC only the stored ones (the SCR falls below light-off in the slow
 urban stretch at 0 degC, with or without stop-start). The hybrid also: the engine stopped and
-was restarted by the e-machine, SOC stayed inside the battery's window, and its SOC-corrected
+was restarted by the e-machine, SOC stayed inside the battery's window, the EMS never asked
+beyond the e-machine's or the battery's live limits (em_clamped_s = battery_limited_s = 0), and its SOC-corrected
 fuel is below the baseline's at the same ambient. Finally each summary equals the stored one
 (test/scenario/reference/missions) within mission_reference.REL_TOL."""
 import os
@@ -106,6 +107,9 @@ class Missions(unittest.TestCase):
             self.assertGreater(s["cranking_s"], 0.0, n)
             self.assertGreaterEqual(s["soc_min"], limits["soc_min"], n)
             self.assertLessEqual(s["soc_max"], limits["soc_max"], n)
+            # the EMS asks within the live limits of the step it commands
+            self.assertEqual(s["em_clamped_s"], 0.0, n)
+            self.assertEqual(s["battery_limited_s"], 0.0, n)
 
     def test_hybrid_corrected_fuel_below_the_baseline_at_each_ambient(self):
         by = {(sc, a): s for _, sc, a, s in self.each()}

@@ -29,7 +29,8 @@ void EmsParticipant::configure() {
   // stop-start needs an engine that can be stopped and cranked: the map engine (with the 1D
   // engine the EMS keeps it running and publishes the reason StopStartDisabled)
   const bool supported = cosim::scenarioEngineModel(nh_) == "map";
-  model_ = std::make_unique<EmsModel>(p, *fuel_, supported);
+  em_limits_ = std::make_unique<MachineLimitModel>(emachineModel());
+  model_ = std::make_unique<EmsModel>(p, *fuel_, supported, em_limits_.get());
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
   ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);
 
@@ -42,6 +43,17 @@ void EmsParticipant::configure() {
   engine_pub_ = addOwnOutput<hybrid_bus_twin::EngineCommand>("engine_command");
   last_demand_.ambient_temperature_k = ambient_T_K_;
   last_demand_.ambient_pressure_pa = ambient_p_Pa_;
+}
+
+std::unique_ptr<emachine::EMachineModel> EmsParticipant::emachineModel() const {
+  // the e-machine's YAML, checked on its own (errors name it), as the e-machine node reads it
+  const std::string file = cosim::scenarioConfigFile(nh_, "emachine.yaml");
+  emachine::EMachineParams p;
+  ParamSet ps;
+  p.declare(ps);
+  applyParamFile(ps, file);
+  p.data.vemp_file = cosim::resolvePackagePath(nh_, p.data.vemp_file);
+  return std::make_unique<emachine::EMachineModel>(p, file);
 }
 
 void EmsParticipant::step(const ros::Time& t, double dt_s) {
@@ -59,6 +71,9 @@ void EmsParticipant::step(const ros::Time& t, double dt_s) {
   in.engine_min_torque_Nm = d.engine_min_torque_nm;
   in.em_max_torque_Nm = m.torque_max_nm;
   in.em_min_torque_Nm = m.torque_min_nm;
+  in.em_winding_T_K = m.winding_temperature_k;
+  in.em_magnet_T_K = m.magnet_temperature_k;
+  in.dc_voltage_V = b.terminal_voltage_v;
   in.soc = b.soc;
   in.battery_T_K = b.cell_temperature_k;
   in.discharge_limit_W = b.discharge_power_limit_w;

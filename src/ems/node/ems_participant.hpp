@@ -4,13 +4,14 @@
 //
 // Sits in the second Gauss-Seidel group (vehicle -> EMS -> engine, e-machine -> battery):
 // Inputs: /vehicle/driver_demand (DriverDemand, fresh: stamped t_k + P, the demand for the next
-//         step), /emachine/state (live torque limits), /battery/state (SOC, T, power limits),
+//         step), /emachine/state (temperatures for the live torque limits), /battery/state
+//         (SOC, T, power limits, terminal voltage),
 //         /cooling/state (HT coolant) and /aftertreatment/state (SCR brick) when those
 //         participants run (else the engine and ATS count as warm).
 // Outputs (stamped t_k + P): /ems/command (EmsCommand: split, mode and reason, for the e-machine,
 //         the vehicle and the bag), /ems/engine_command (EngineCommand for the engine node).
-// Parameters: private namespace = config/ems.yaml; the map engine YAML of the scenario's config
-//         folder (cosim::scenarioConfigFile); /scenario/engine_model (stop-start with the map
+// Parameters: private namespace = config/ems.yaml; the map engine and the e-machine YAML of the
+//         scenario's config folder (cosim::scenarioConfigFile), the controller's models of both; /scenario/engine_model (stop-start with the map
 //         engine only: the 1D engine cannot be stopped and cranked).
 // Diagnostics (docs/diagnostics.md): no warnings of its own (the limits it meets are the
 // e-machine's and the battery's); key/values mode, reason, equivalence factor, stops/starts.
@@ -25,6 +26,7 @@
 #include <memory>
 
 #include "cosim/participant.hpp"
+#include "emachine/emachine_model.hpp"
 #include "ems/ems_model.hpp"
 #include "engine_map/map_engine.hpp"
 
@@ -40,6 +42,21 @@ class MapFuelModel : public FuelModel {
   std::unique_ptr<engine_map::MapEngine> e_;
 };
 
+/// The controller's e-machine limit model: the e-machine model of the scenario's emachine.yaml
+/// (its live limits, the function the e-machine clamps with).
+class MachineLimitModel : public EmLimitModel {
+ public:
+  explicit MachineLimitModel(std::unique_ptr<emachine::EMachineModel> m) : m_(std::move(m)) {}
+  void liveLimits(double w, double V, double T_w, double T_m, double& max_Nm, double& min_Nm) const override {
+    const emachine::CrankLimits c = m_->limits(w, V, T_w, T_m);
+    max_Nm = c.max_live;
+    min_Nm = c.min_live;
+  }
+
+ private:
+  std::unique_ptr<emachine::EMachineModel> m_;
+};
+
 class EmsParticipant : public cosim::Participant {
  public:
   EmsParticipant(ros::NodeHandle nh, ros::NodeHandle pnh) : Participant(nh, pnh) {}
@@ -51,7 +68,9 @@ class EmsParticipant : public cosim::Participant {
   void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
+  std::unique_ptr<emachine::EMachineModel> emachineModel() const;
   std::unique_ptr<MapFuelModel> fuel_;
+  std::unique_ptr<MachineLimitModel> em_limits_;
   std::unique_ptr<EmsModel> model_;
   cosim::Input<hybrid_bus_twin::DriverDemand>* demand_ = nullptr;
   cosim::Input<hybrid_bus_twin::EMachineState>* em_ = nullptr;
