@@ -14,13 +14,17 @@
                                     one table per engine (fuel, warm-up, fan energy, charge air,
                                     light-off, engine-out and tailpipe NOx, balances, wall/sim);
                                     N runs at a time (default 1: wall/sim undisturbed)
-  scripts/twin bench hybrid [--engines map,1d] [--until S] [--jobs N]  the hybrid's saving:
-                                    baseline_urban and hybrid_urban at 0, 25 and 40 degC for each
-                                    engine (nodelets; the baseline with the same Gauss-Seidel
-                                    torque chain [[vehicle, aftertreatment, cooling], [engine]] as
-                                    the hybrid's, so both see the engine torque without delay);
-                                    one table per temperature with the SOC-corrected fuel
-                                    saving (twin_tools.report.hybrid)
+  scripts/twin bench hybrid [--engines map,1d] [--hvac on,off] [--until S] [--jobs N]  the
+                                    hybrid's saving: baseline_urban and hybrid_urban at 0, 25 and
+                                    40 degC for each engine and HVAC setting (nodelets; the baseline
+                                    with the same Gauss-Seidel torque chain [[vehicle,
+                                    aftertreatment, cooling], [engine]] as the hybrid's, so both see
+                                    the engine torque without delay); the study table
+                                    (docs/bench/hybrid_study.md) with its checks (every stop served,
+                                    every hybrid restarted its engine and asked nothing beyond the
+                                    e-machine's and battery's limits: exit 1 otherwise), and one
+                                    table per engine and temperature (SOC-corrected saving:
+                                    twin_tools.report.hybrid)
   scripts/twin bench rates [--engines map,1d] [--until S]  multi-rate stepping vs everything at
                                     the 10 ms base step (cooling macro step, ATS model step 0.01 s
                                     in a config copy): fuel and temperature rises
@@ -236,75 +240,153 @@ def bench_ambient(a):
 
 HYBRID_ROWS = [("fuel_kg", "fuel [kg]", "%.3f"), ("fuel_soc_corrected_kg", "fuel, SOC-corrected [kg]", "%.3f"),
                ("fuel_l_per_100km", "fuel [L/100 km]", "%.2f"), ("fuel_saving_pct", "fuel saving [%]", "%.2f"),
+               ("heater_fuel_kg", "  of which auxiliary heater [kg]", "%.3f"), ("hvac_kwh", "HVAC [kWh]", "%.2f"),
                ("engine_positive_kwh", "engine positive work [kWh]", "%.2f"),
                ("em_boost_kwh", "EM boosting [kWh]", "%.2f"), ("em_brake_kwh", "EM braking + charging [kWh]", "%.2f"),
                ("em_regen_kwh", "  of which regenerative braking [kWh]", "%.2f"),
                ("em_loss_kwh", "EM + inverter losses [kWh]", "%.2f"), ("battery_loss_kwh", "battery loss [kWh]", "%.3f"),
                ("fan_kwh", "fan [kWh]", "%.2f"), ("pump_kwh", "HT pump [kWh]", "%.3f"), ("lt_pump_kwh", "LT pump [kWh]", "%.3f"),
                ("nox_engine_out_g", "NOx engine-out [g]", "%.0f"), ("nox_tailpipe_g", "NOx tailpipe [g]", "%.1f"),
-               ("warmup_s", "coolant warm-up [s]", "%.0f"), ("ats_lightoff_s", "SCR light-off [s]", "%.0f"),
+               ("coolant_warm_s", "coolant at the EMS's warm threshold (70 °C) [s]", "%.0f"),
+               ("warmup_s", "thermostat opening (83 °C) [s]", "%.0f"), ("ats_lightoff_s", "SCR light-off [s]", "%.0f"),
+               ("scr_standstill_mean_c", "SCR at standstill, mean [°C]", "%.0f"),
+               ("scr_standstill_min_c", "SCR at standstill, min [°C]", "%.0f"),
                ("soc_final", "final SOC [-]", "%.3f"), ("battery_max_c", "max cell T [°C]", "%.1f"),
                ("winding_max_c", "max winding T [°C]", "%.1f"), ("em_derating_s", "EM derating [s]", "%.0f"),
                ("em_clamped_s", "EM request clamped [s]", "%.1f"), ("battery_limited_s", "battery request limited [s]", "%.1f"),
                ("engine_off_s", "engine off [s]", "%.0f"), ("engine_starts", "restarts", "%d"),
-               ("warmup_inhibit_s", "warm-up inhibit [s]", "%.0f"),
+               ("warmup_inhibit_s", "warm-up inhibit [s]", "%.0f"), ("stops_served", "stops served", "%d"),
                ("electric_path_closure", "electric-path balance", "%.1e"), ("speed_rmse_kmh", "speed RMSE [km/h]", "%.2f")]
+
+# The study table (one row per engine, ambient and HVAC setting): (key, header, format); "b:"
+# takes the baseline's value, "h:" the hybrid's.
+STUDY_COLUMNS = [("b:fuel_kg", "fuel baseline [kg]", "%.2f"), ("h:fuel_soc_corrected_kg", "hybrid, SOC-corr. [kg]", "%.2f"),
+                 ("h:fuel_saving_pct", "saving [%]", "%.1f"),
+                 ("b:coolant_warm_s", "70 °C baseline [s]", "%.0f"), ("h:coolant_warm_s", "70 °C hybrid [s]", "%.0f"),
+                 ("h:engine_off_s", "engine off [s]", "%.0f"), ("h:engine_starts", "starts", "%d"),
+                 ("b:heater_fuel_kg", "heater fuel b/h [kg]", "%.2f"), ("h:heater_fuel_kg", None, "%.2f"),
+                 ("h:hvac_kwh", "HVAC hybrid [kWh]", "%.1f"),
+                 ("b:nox_engine_out_g", "NOx eo b/h [g]", "%.0f"), ("h:nox_engine_out_g", None, "%.0f"),
+                 ("b:nox_tailpipe_g", "NOx tp b/h [g]", "%.0f"), ("h:nox_tailpipe_g", None, "%.0f"),
+                 ("h:scr_standstill_mean_c", "SCR at stops, hybrid [°C]", "%.0f")]
+
+
+def _cell(s, key, fmt):
+    return (fmt % s[key]) if s and key in s and s[key] is not None else "-"
+
+
+def study_table(results, engines, hvacs):
+    """The study's table in Markdown lines: one row per engine, ambient and HVAC setting."""
+    heads = []
+    for key, head, _ in STUDY_COLUMNS:
+        if head is None:
+            continue
+        heads.append(head)
+    lines = ["| engine | °C | HVAC | " + " | ".join(heads) + " |", "|---" * (3 + len(heads)) + "|"]
+    for engine in engines:
+        for hvac in hvacs:
+            for amb in (0, 25, 40):
+                b = results[(engine, amb, hvac, "baseline_urban")][1]
+                h = results[(engine, amb, hvac, "hybrid_urban")][1]
+                cells = []
+                for key, head, fmt in STUDY_COLUMNS:
+                    who, k = key.split(":")
+                    c = _cell(b if who == "b" else h, k, fmt)
+                    if head is None:
+                        cells[-1] += " / " + c
+                    else:
+                        cells.append(c)
+                lines.append("| %s | %d | %s | %s |" % (engine, amb, hvac or "default", " | ".join(cells)))
+    return lines
+
+
+def study_checks(results):
+    """The invariants every study run must meet: (description, ok) per check."""
+    checks = []
+    for (engine, amb, hvac, scen), (_, s) in sorted(results.items()):
+        name = "%s %s %d °C%s" % (scen, engine, amb, " hvac:=" + hvac if hvac else "")
+        if not s:
+            checks.append(("%s: ended ok" % name, False))
+            continue
+        checks.append(("%s: %s/%s stops served" % (name, s.get("stops_served"), s.get("stops_total")),
+                       s.get("stops_served") == s.get("stops_total")))
+        if scen == "hybrid_urban":
+            checks.append(("%s: %s engine starts" % (name, s.get("engine_starts")), s.get("engine_starts", 0) > 0))
+            checks.append(("%s: em_clamped_s %s, battery_limited_s %s" % (name, s.get("em_clamped_s"),
+                                                                         s.get("battery_limited_s")),
+                           s.get("em_clamped_s") == 0.0 and s.get("battery_limited_s") == 0.0))
+    return checks
 
 
 def bench_hybrid(a):
-    """Baseline vs hybrid at 0, 25 and 40 degC with each engine (nodelets)."""
+    """Baseline vs hybrid at 0, 25 and 40 degC with each engine (nodelets) and each HVAC setting."""
     from concurrent.futures import ThreadPoolExecutor
     engines = [e for e in a.engines.split(",") if e]
+    hvacs = [h for h in a.hvac.split(",") if h] or [""]
     jobs = []
     for engine in engines:
-        for amb in (0, 25, 40):
-            for scen in ("baseline_urban", "hybrid_urban"):
-                out = os.path.join(REPO, "results", "bench", "hybrid_%s_%s_%dC" % (scen.split("_")[0], engine, amb))
-                os.makedirs(os.path.dirname(out), exist_ok=True)
-                args = ["mode:=nodelets", "ambient:=%d" % amb, "engine:=" + engine, "timeout:=10"]
-                if scen == "baseline_urban":
-                    args.append("order:=[[vehicle, aftertreatment, cooling], [engine]]")
-                if a.until:
-                    args.append("until:=%g" % a.until)
-                jobs.append(((engine, amb, scen), out, args))
+        for hvac in hvacs:
+            for amb in (0, 25, 40):
+                for scen in ("baseline_urban", "hybrid_urban"):
+                    out = os.path.join(REPO, "results", "bench", "hybrid_%s_%s_%dC%s" % (
+                        scen.split("_")[0], engine, amb, "_hvac-" + hvac if hvac else ""))
+                    os.makedirs(os.path.dirname(out), exist_ok=True)
+                    args = ["mode:=nodelets", "ambient:=%d" % amb, "engine:=" + engine, "timeout:=10"]
+                    if hvac:
+                        args.append("hvac:=" + hvac)
+                    if scen == "baseline_urban":
+                        args.append("order:=[[vehicle, aftertreatment, cooling], [engine]]")
+                    if a.until:
+                        args.append("until:=%g" % a.until)
+                    jobs.append(((engine, amb, hvac, scen), out, args))
+    t0 = time.time()
     with ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
-        results = dict(ex.map(lambda j: (j[0], (j[1], run_scenario(j[0][2], j[1], j[2]))), jobs))
+        results = dict(ex.map(lambda j: (j[0], (j[1], run_scenario(j[0][3], j[1], j[2]))), jobs))
+    wall_s = time.time() - t0
     # the hybrid's saving against its baseline (SOC-corrected): the report from the hybrid's bag
     for engine in engines:
-        for amb in (0, 25, 40):
-            (bo, bs), (ho, hs) = results[(engine, amb, "baseline_urban")], results[(engine, amb, "hybrid_urban")]
-            if bs and hs:
-                subprocess.call([sys.executable, "-m", "twin_tools.report.postprocess", ho,
-                                 "--bag", os.path.join(ho, "run.bag"), "--baseline", os.path.join(bo, "summary.json")],
-                                stdout=subprocess.DEVNULL)
-                with open(os.path.join(ho, "summary.json")) as f:
-                    cpu = hs.get("compute_time_s", {})
-                    hs.clear()
-                    hs.update(json.load(f))
-                    hs["compute_time_s"] = cpu
+        for hvac in hvacs:
+            for amb in (0, 25, 40):
+                (bo, bs), (ho, hs) = results[(engine, amb, hvac, "baseline_urban")], results[(engine, amb, hvac, "hybrid_urban")]
+                if bs and hs:
+                    subprocess.call([sys.executable, "-m", "twin_tools.report.postprocess", ho,
+                                     "--bag", os.path.join(ho, "run.bag"), "--baseline", os.path.join(bo, "summary.json")],
+                                    stdout=subprocess.DEVNULL)
+                    with open(os.path.join(ho, "summary.json")) as f:
+                        cpu = hs.get("compute_time_s", {})
+                        hs.clear()
+                        hs.update(json.load(f))
+                        hs["compute_time_s"] = cpu
+    head = ("VECTO Urban%s, nodelets, %d run(s) at a time; both runs of a pair with the torque chain stepped "
+            "without delay (Gauss-Seidel groups). Saving = (baseline fuel - hybrid fuel corrected for the "
+            "battery's energy change) / baseline fuel (twin_tools.report.hybrid). Wall time of all %d runs: %.0f s." % (
+                " (first %g s)" % a.until if a.until else ", full mission", max(1, a.jobs), len(jobs), wall_s))
+    checks = study_checks(results)
+    study = [head, ""] + study_table(results, engines, hvacs) + [
+        "", "Checks:", ""] + ["- %s %s" % ("ok:" if ok else "FAILED:", what) for what, ok in checks] + [""]
+    print("\n".join(study))
+    a.measurement.write("hybrid_study", "Baseline against 48 V P1 hybrid: the study", study, bool(a.until))
     table = {}
     for engine in engines:
-        lines = ["VECTO Urban%s, nodelets, %d run(s) at a time; both runs of a pair with the torque chain stepped "
-                 "without delay (Gauss-Seidel groups). Saving = (baseline fuel - hybrid fuel corrected for the "
-                 "battery's energy change) / baseline fuel (twin_tools.report.hybrid)." % (
-                     " (first %g s)" % a.until if a.until else ", full mission", max(1, a.jobs)), ""]
-        for amb in (0, 25, 40):
-            bs, hs = results[(engine, amb, "baseline_urban")][1], results[(engine, amb, "hybrid_urban")][1]
-            lines += ["## %s engine, %d °C" % (engine, amb), "", "| quantity | baseline | hybrid |", "|---|---|---|"]
-            for key, label, fmt in HYBRID_ROWS:
-                cell = lambda s: (fmt % s[key]) if s and key in s and s[key] is not None else "-"
-                lines.append("| %s | %s | %s |" % (label, cell(bs), cell(hs)))
-            for s, name in ((bs, "baseline"), (hs, "hybrid")):
-                if s:
-                    table["%s_%s_%d" % (name, engine, amb)] = s
-            wall = lambda s: ("%.4f" % (s["wall_time_s"] / s["sim_time_s"])) if s else "-"
-            lines += ["| wall/sim | %s | %s |" % (wall(bs), wall(hs)), ""]
+        lines = [head, ""]
+        for hvac in hvacs:
+            for amb in (0, 25, 40):
+                bs, hs = results[(engine, amb, hvac, "baseline_urban")][1], results[(engine, amb, hvac, "hybrid_urban")][1]
+                lines += ["## %s engine, %d °C%s" % (engine, amb, ", hvac:=" + hvac if hvac else ""), "",
+                          "| quantity | baseline | hybrid |", "|---|---|---|"]
+                for key, label, fmt in HYBRID_ROWS:
+                    lines.append("| %s | %s | %s |" % (label, _cell(bs, key, fmt), _cell(hs, key, fmt)))
+                for s, name in ((bs, "baseline"), (hs, "hybrid")):
+                    if s:
+                        table["%s_%s_%d%s" % (name, engine, amb, "_hvac-" + hvac if hvac else "")] = s
+                wall = lambda s: ("%.4f" % (s["wall_time_s"] / s["sim_time_s"])) if s else "-"
+                lines += ["| wall/sim | %s | %s |" % (wall(bs), wall(hs)), ""]
         print("\n".join(lines))
         a.measurement.write("hybrid_%s" % engine, "Baseline against 48 V P1 hybrid at 0, 25 and 40 °C, %s engine" % engine,
                             lines, bool(a.until))
     with open(os.path.join(REPO, "results", "bench", "hybrid.json"), "w") as f:
         json.dump(table, f, indent=2)
-    return 0 if all(s for _, s in results.values()) else 1
+    return 0 if all(s for _, s in results.values()) and all(ok for _, ok in checks) else 1
 
 
 def bench_rates(a):
@@ -351,6 +433,8 @@ def main():
     ap.add_argument("what", nargs="?", default="map",
                     choices=["map", "1d", "engine", "ambient", "hybrid", "rates", "cosim", "soak"])
     ap.add_argument("--engines", default="map,1d", help="ambient, hybrid: engine models, comma-separated")
+    ap.add_argument("--hvac", default="", help="hybrid: HVAC settings to run, comma-separated (on,off; default: "
+                                              "the scenarios' default only)")
     ap.add_argument("--jobs", type=int, default=None, help="ambient, hybrid (default 1), soak (default 4): runs at a time")
     ap.add_argument("--runs", type=int, default=20, help="soak: missions")
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")

@@ -3,14 +3,22 @@ postprocess.read_bag: summary keys and plots. Every key is left out when the nod
 did not run (a figure that means nothing for the run is not printed).
 
 Summary keys: fan_kwh (crank-side fan drive energy, signed), pump_kwh (HT pump shaft energy),
-warmup_s (first time the HT coolant reached the thermostat's opening start), ats_lightoff_s (first
-SCR light-off), nox_engine_out_g, nox_tailpipe_g, nox_conversion_pct, nh3_slip_g, adblue_kg,
+warmup_s (first time the HT coolant reached the thermostat's opening start), coolant_warm_s (first
+time it reached the EMS's warm threshold, config/ems.yaml warmup/coolant_warm_K: 70 degC; stop-start
+and boost wait for it), ats_lightoff_s (first SCR light-off), scr_standstill_mean_c and
+scr_standstill_min_c (SCR brick temperature while the bus stands: time mean and minimum over the
+standstill periods after the light-off, where stop-start lets the brick cool), nox_engine_out_g, nox_tailpipe_g, nox_conversion_pct, nh3_slip_g, adblue_kg,
 mean_charge_air_c (time mean of the intake-manifold temperature), mean_back_pressure_kpa
 (time mean of the over-pressure at the turbine outlet), cooling_balance_closure and
 ats_balance_closure (|energy residual| / heat or enthalpy in).
 """
+import os
+
 import numpy as np
+import yaml
+
 from twin_tools import wiring
+from twin_tools.paths import REPO
 
 # topics (twin_tools.wiring: the participants' topics.yaml)
 AFTERTREATMENT_STATE = wiring.topic("aftertreatment", "state")
@@ -19,7 +27,36 @@ ENGINE_EXHAUST = wiring.topic("engine", "exhaust")
 ENGINE_STATE = wiring.topic("engine", "state")
 VEHICLE_ENGINE_COMMAND = wiring.topic("vehicle", "engine_command")
 
+VEHICLE_STATE = wiring.topic("vehicle", "state")
+
 J_PER_KWH = 3.6e6
+STANDSTILL_M_S = 0.01  # the bus stands below this speed [m/s]
+
+
+def coolant_warm_K():
+    """The EMS's warm threshold of the HT coolant [K] (config/ems.yaml warmup/coolant_warm_K)."""
+    with open(os.path.join(REPO, "config", "ems.yaml")) as f:
+        return float(yaml.safe_load(f)["warmup"]["coolant_warm_K"])
+
+
+def first_time_at_or_above(t, x, level):
+    """First time [s] x reaches level, None if never."""
+    i = np.flatnonzero(x >= level)
+    return float(t[i[0]]) if len(i) else None
+
+
+def standstill_scr(ats, veh, after_s):
+    """(time mean, min) of the SCR brick temperature [K] while the bus stands after after_s [s];
+    None when it never stands then."""
+    t = ats["t"]
+    v = np.interp(t, veh["t"], veh["speed_m_s"])
+    still = (v < STANDSTILL_M_S) & (t >= after_s)
+    if np.count_nonzero(still[1:]) == 0:
+        return None
+    dt = np.diff(t)
+    T = ats["scr_temperature_k"]
+    w = dt * still[1:]
+    return float(np.sum(T[1:] * w) / np.sum(w)), float(np.min(T[1:][still[1:]]))
 
 
 def _time_mean(d, field):
@@ -39,6 +76,9 @@ def thermal_summary(data):
         w = float(cool["warmup_time_s"][-1])
         if w >= 0.0:
             s["warmup_s"] = w
+        warm = first_time_at_or_above(cool["t"], cool["coolant_ht_temperature_k"], coolant_warm_K())
+        if warm is not None:
+            s["coolant_warm_s"] = warm
         heat_in = float(cool["engine_heat_j"][-1] + cool["lt_heat_j"][-1])
         if heat_in > 0:
             s["cooling_balance_closure"] = abs(float(cool["energy_residual_j"][-1])) / heat_in
@@ -52,6 +92,11 @@ def thermal_summary(data):
         nin = float(ats["engine_nox_mass_kg"][-1])
         if nin > 0:
             s["nox_conversion_pct"] = 100.0 * (1.0 - float(ats["tailpipe_nox_mass_kg"][-1]) / nin)
+        veh = data.get(VEHICLE_STATE)
+        scr = standstill_scr(ats, veh, max(lo, 0.0)) if veh is not None and lo >= 0.0 else None
+        if scr is not None:
+            s["scr_standstill_mean_c"] = scr[0] - 273.15
+            s["scr_standstill_min_c"] = scr[1] - 273.15
         s["nh3_slip_g"] = float(ats["nh3_slip_mass_kg"][-1]) * 1000.0
         s["adblue_kg"] = float(ats["urea_mass_kg"][-1])
         h_in = float(ats["enthalpy_in_j"][-1])
