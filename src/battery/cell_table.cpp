@@ -21,6 +21,20 @@ std::size_t indexOf(const std::vector<double>& axis, double q) {
 }
 }  // namespace
 
+double CellTable::arrhenius(double r1, double r2, double T1_K, double T2_K, double T_K) {
+  const double theta_K = std::max(0.0, std::log(r1 / r2) / (1.0 / T1_K - 1.0 / T2_K));
+  return r1 * std::exp(theta_K * (1.0 / T_K - 1.0 / T1_K));
+}
+
+CellPoint CellTable::at(double soc, double T_K) const {
+  const std::vector<double>& T = ocv_.y();
+  const double T1 = T[0];
+  if (T_K >= T1) return {ocv_(soc, T_K), r0_(soc, T_K), r1_(soc, T_K), tau_(soc, T_K)};
+  const double T2 = T[1];
+  return {ocv_(soc, T1), arrhenius(r0_(soc, T1), r0_(soc, T2), T1, T2, T_K),
+          arrhenius(r1_(soc, T1), r1_(soc, T2), T1, T2, T_K), tau_(soc, T1)};
+}
+
 CellTable CellTable::read(const std::string& path) {
   const CsvTable t = CsvTable::read(path);
   const auto& s = t.column("SOC");

@@ -79,10 +79,36 @@ TEST(BatteryTable, InterpolationAndClamping) {
   // (0.5, 293) 3.71, (0.5, 313) 3.72.
   const double hand = 0.5 * (0.5 * 3.63 + 0.5 * 3.64) + 0.5 * (0.5 * 3.71 + 0.5 * 3.72);
   EXPECT_NEAR(t.ocv(0.375, 303.0), hand, 1e-14);
-  // Clamped at the edges: 0 degC uses the 278 K column, 50 degC the 313 K column, SOC > 1 the 1 row.
-  EXPECT_DOUBLE_EQ(t.at(0.5, 273.15).r0_Ohm, 0.0107);
+  // Clamped at the warm and SOC edges: 50 degC uses the 313 K column, SOC > 1 the 1 row.
   EXPECT_DOUBLE_EQ(t.at(0.9, 330.0).r1_Ohm, 0.0011);
   EXPECT_DOUBLE_EQ(t.ocv(1.2, 293.0), 4.19);
+}
+
+TEST(BatteryTable, ColdCellsFollowTheArrheniusLawOfTheTwoColdestColumns) {
+  const BatteryModel m(yamlParams(), "config/battery.yaml");
+  const CellTable& t = m.cellTable();
+  // CSV rows SOC 0.5 at 278 and 293 K: R0 0.0107 / 0.0082, R1 0.0034 / 0.0016 Ohm. The Arrhenius
+  // law through both points, written out here: R(T) = R(278) (R(278)/R(293))^((1/T - 1/278) /
+  // (1/278 - 1/293)).
+  auto law = [](double r278, double r293, double T) {
+    return r278 * std::pow(r278 / r293, (1.0 / T - 1.0 / 278.0) / (1.0 / 278.0 - 1.0 / 293.0));
+  };
+  for (double T : {273.15, 263.15, 253.15}) {
+    const CellPoint c = t.at(0.5, T);
+    EXPECT_NEAR(c.r0_Ohm, law(0.0107, 0.0082, T), 1e-15) << T;
+    EXPECT_NEAR(c.r1_Ohm, law(0.0034, 0.0016, T), 1e-15) << T;
+    EXPECT_DOUBLE_EQ(c.ocv_V, 3.71);  // OCV and tau1 held at the 278 K column
+    EXPECT_DOUBLE_EQ(c.tau1_s, 36.0);
+  }
+  // 0 degC against 5 degC: R0 +9.7 %, R1 +30 % (activation energies 12 and 34 kJ/mol)
+  EXPECT_NEAR(t.at(0.5, 273.15).r0_Ohm / 0.0107, 1.0967, 5e-4);
+  EXPECT_NEAR(t.at(0.5, 273.15).r1_Ohm / 0.0034, 1.299, 5e-3);
+  // continuous at the table's edge; the law returns the warmer point it was drawn through
+  EXPECT_DOUBLE_EQ(t.at(0.5, 278.0).r0_Ohm, 0.0107);
+  EXPECT_NEAR(t.at(0.5, 278.0 - 1e-9).r0_Ohm, 0.0107, 1e-12);
+  EXPECT_NEAR(CellTable::arrhenius(0.0107, 0.0082, 278.0, 293.0, 293.0), 0.0082, 1e-15);
+  // a table that falls towards the cold is held at its edge (no negative activation energy)
+  EXPECT_DOUBLE_EQ(CellTable::arrhenius(0.0090, 0.0100, 278.0, 293.0, 250.0), 0.0090);
 }
 
 TEST(BatteryModel, TerminalVoltageAtTablePointMatchesHandSolvedCircuit) {
