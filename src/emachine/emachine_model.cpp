@@ -80,6 +80,11 @@ CrankLimits EMachineModel::limits(double w_crank, double V, double T_w, double T
   return c;
 }
 
+double EMachineModel::dcPower(double T_crank, double w_crank, double V, double T_w) const {
+  const double T_em = emTorque(T_crank), w_em = p_.data.ratio * std::max(0.0, w_crank);
+  return T_em * w_em + loss_.evaluate(T_em, w_em, std::max(0.0, V), T_w).total();
+}
+
 ThermalNetwork::Vec EMachineModel::nodeHeat(const LossBreakdown& b) {
   ThermalNetwork::Vec q;
   q << b.copper_W, b.iron_W, b.rotor_W + b.windage_W, b.bearing_W;

@@ -105,6 +105,11 @@ class EMachineModel {
   CrankLimits limits(double crank_speed_rad_s, double V, double T_winding_K, double T_magnet_K) const;
   /// Node heat inputs [W] (W, S, R, H) of a loss breakdown.
   static ThermalNetwork::Vec nodeHeat(const LossBreakdown& b);
+  /// DC power [W] (> 0 drawn from the battery) of crank torque T_crank [Nm] at crank speed [rad/s],
+  /// voltage V and winding temperature [K]: EM shaft power + machine and inverter losses (the
+  /// ratio stage's loss is inside the EM torque). The power step() books for a request inside the
+  /// live limits.
+  double dcPower(double crank_torque_Nm, double crank_speed_rad_s, double V, double T_winding_K) const;
   /// Crank torque of an EM torque and back.
   double crankTorque(double T_em) const;
   double emTorque(double T_crank) const;

@@ -30,7 +30,7 @@ const EmsDecision& EmsModel::step(double dt, const EmsInputs& in) {
   const double vals[] = {in.crank_torque_demand_Nm, in.wheel_brake_demand_Nm, in.engine_speed_rad_s,
                          in.crank_to_wheel_ratio, in.engine_max_torque_Nm, in.engine_min_torque_Nm,
                          in.em_max_torque_Nm, in.em_min_torque_Nm, in.em_winding_T_K, in.em_magnet_T_K,
-                         in.dc_voltage_V, in.soc, in.battery_T_K, in.discharge_limit_W,
+                         in.dc_voltage_V, in.dcdc_power_W, in.soc, in.battery_T_K, in.discharge_limit_W,
                          in.charge_limit_W, in.coolant_T_K, in.scr_T_K};
   for (double x : vals)
     if (!std::isfinite(x)) throw ModelDivergence("ems", "inputs", "non-finite input");
@@ -46,6 +46,30 @@ EmsInputs EmsModel::withLiveLimits(const EmsInputs& in) const {
   if (!std::isfinite(x.em_max_torque_Nm) || !std::isfinite(x.em_min_torque_Nm))
     throw ModelDivergence("ems", "e-machine limit model", "non-finite live limit");
   return x;
+}
+
+double EmsModel::batteryBound(double T, double P_avail, const EmsInputs& in) const {
+  const double w = std::max(0.0, in.engine_speed_rad_s);
+  if (T == 0.0 || w <= 0.0) return T;
+  const auto& e = p_.ecms;
+  if (!em_limits_) {  // the controller's constant efficiencies
+    const double bound = T > 0.0 ? P_avail * e.em_motor_efficiency / w : -P_avail / (w * e.em_generator_efficiency);
+    return T > 0.0 ? std::min(T, bound) : std::max(T, bound);
+  }
+  // electric power the pack sees for crank torque x: drawn (> 0) motoring, returned (> 0) generating
+  const double sign = T > 0.0 ? 1.0 : -1.0;
+  auto pack_W = [&](double x) {
+    return sign * em_limits_->dcPower_W(x, w, in.dc_voltage_V, in.em_winding_T_K);
+  };
+  if (pack_W(T) <= P_avail) return T;
+  double ok = 0.0, over = T;  // |x| at or below ok fits, at over does not
+  if (pack_W(0.0) > P_avail) return 0.0;  // the machine's own losses exceed the share at zero torque
+  while (std::fabs(over - ok) > 1e-6) {
+    const double mid = 0.5 * (ok + over);
+    if (pack_W(mid) <= P_avail) ok = mid;
+    else over = mid;
+  }
+  return ok;
 }
 
 const EmsDecision& EmsModel::decide(double dt, const EmsInputs& in) {
@@ -105,7 +129,7 @@ const EmsDecision& EmsModel::decide(double dt, const EmsInputs& in) {
                               "engine start failed: the crank stayed below the firing speed (e-machine "
                               "or battery limits too low for stop_start/crank_torque_Nm?)");
       double T = std::min(ss.crank_torque_Nm, std::max(0.0, in.em_max_torque_Nm));
-      if (w > 1.0) T = std::min(T, in.discharge_limit_W * p_.ecms.em_motor_efficiency / w);
+      if (w > 1.0) T = batteryBound(T, std::max(0.0, in.discharge_limit_W - in.dcdc_power_W), in);
       d_.engine_torque_request_Nm = 0.0;
       d_.em_torque_request_Nm = std::max(0.0, T);
       d_.engine_on = false;
@@ -137,7 +161,7 @@ void EmsModel::regen(const EmsInputs& in) {
     return;
   }
   const double em_lim = std::max(0.0, -in.em_min_torque_Nm);
-  const double bat_lim = std::max(0.0, in.charge_limit_W) / (w * p_.ecms.em_generator_efficiency);
+  const double bat_lim = -batteryBound(-em_lim, std::max(0.0, in.charge_limit_W + in.dcdc_power_W), in);
   const double want = in.wheel_brake_demand_Nm / i;
   double T = std::min({em_lim, bat_lim, want});
   // all of it regenerated, or the binding limit (the friction brake takes the rest)
@@ -167,7 +191,7 @@ void EmsModel::ecms(const EmsInputs& in, bool warm, double dt) {
   double f_T = std::clamp((p_.battery.assist_zero_K - in.battery_T_K) /
                           (p_.battery.assist_zero_K - p_.battery.assist_derate_start_K), 0.0, 1.0);
   double hi = std::max(0.0, in.em_max_torque_Nm);
-  const double hi_bat = std::max(0.0, in.discharge_limit_W) * f_T * e.em_motor_efficiency / w;
+  const double hi_bat = batteryBound(hi, std::max(0.0, in.discharge_limit_W * f_T - in.dcdc_power_W), in);
   if (hi_bat < hi) { hi = hi_bat; hi_why = f_T < 1.0 ? Reason::BatteryHot : Reason::BatteryLimit; }
   hi = std::min(hi, Td - in.engine_min_torque_Nm);
   if (!warm) { hi = 0.0; hi_why = Reason::WarmupInhibit; }
@@ -175,7 +199,7 @@ void EmsModel::ecms(const EmsInputs& in, bool warm, double dt) {
   // Lower bound (load-point shift = charging).
   Reason lo_why = Reason::EcmsOptimum;
   double lo = std::min(0.0, in.em_min_torque_Nm);
-  const double lo_bat = -std::max(0.0, in.charge_limit_W) / (w * e.em_generator_efficiency);
+  const double lo_bat = batteryBound(lo, std::max(0.0, in.charge_limit_W + in.dcdc_power_W), in);
   if (lo_bat > lo) { lo = lo_bat; lo_why = Reason::BatteryLimit; }
   lo = std::max(lo, Td - in.engine_max_torque_Nm);
   if (in.soc > e.soc_max) { lo = std::max(lo, 0.0); lo_why = Reason::SocHigh; }

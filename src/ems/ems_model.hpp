@@ -23,6 +23,10 @@
 //    f_T = clamp((T_zero - T_bat)/(T_zero - T_start), 0, 1): assist fades 40 -> 45 °C.
 //    ṁ_f(ω, T) is the controller's engine model (a steady fuel map, FuelModel); the plant may be
 //    the map or the 1D engine.
+//    Battery bounds: the pack's power limits less its other DC load (P_dcdc) are what the
+//    e-machine may draw or return. With an EmLimitModel the bound is the torque whose DC power by
+//    the e-machine's own loss model meets it exactly (bisection, 1e-6 Nm), so the battery is never
+//    asked beyond its limits; without one, the controller's constant efficiencies above.
 //    T_em,max/min live: the limits valid for the step commanded. With an EmLimitModel they are
 //    evaluated at this step's crank speed ω, the DC voltage the e-machine will use (the battery's
 //    latest terminal voltage) and its winding/magnet temperatures at the step start: the very
@@ -58,6 +62,10 @@ class EmLimitModel {
   virtual ~EmLimitModel() = default;
   virtual void liveLimits(double crank_speed_rad_s, double dc_voltage_V, double winding_T_K, double magnet_T_K,
                           double& max_Nm, double& min_Nm) const = 0;
+  /// DC power [W] (> 0 drawn) of crank torque T [Nm] at crank speed [rad/s], voltage [V] and
+  /// winding temperature [K]: the e-machine's own loss model (machine, inverter, ratio stage).
+  virtual double dcPower_W(double crank_torque_Nm, double crank_speed_rad_s, double dc_voltage_V,
+                           double winding_T_K) const = 0;
 };
 
 enum class Mode : uint8_t { EngineOnly = 0, Boost = 1, Regen = 2, LoadPointShift = 3, Stopped = 4, Cranking = 5 };
@@ -92,6 +100,8 @@ struct EmsInputs {
   double em_winding_T_K = 298.15, em_magnet_T_K = 298.15;
   // DC voltage the e-machine steps with: the battery's latest terminal voltage [V]
   double dc_voltage_V = 48.0;
+  // the pack's other DC load (the DC/DC converter to the 24 V net) [W], drawn beside the e-machine
+  double dcdc_power_W = 0.0;
   // from the battery
   double soc = 0.5, battery_T_K = 298.15, discharge_limit_W = 0.0, charge_limit_W = 0.0;
   // warm-up state (cooling, aftertreatment); without the thermal nodes: warm
@@ -132,6 +142,9 @@ class EmsModel {
   /// The inputs with the e-machine's limits valid for this step (EmLimitModel, see above).
   EmsInputs withLiveLimits(const EmsInputs& in) const;
   const EmsDecision& decide(double dt_s, const EmsInputs& in);
+  /// The crank torque within [0, T_em] (T_em > 0 motoring, < 0 generating) whose DC power stays
+  /// within the battery's share P_avail_W >= 0 (drawn when motoring, returned when generating).
+  double batteryBound(double T_em_Nm, double P_avail_W, const EmsInputs& in) const;
   void regen(const EmsInputs& in);
   void ecms(const EmsInputs& in, bool warm, double dt_s);
 

@@ -5,6 +5,7 @@
 // step (no limit model) is clamped while the speed rises: the reference that the test can fail.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -52,6 +53,7 @@ class Machine : public EmLimitModel {
     max_Nm = c.max_live;
     min_Nm = c.min_live;
   }
+  double dcPower_W(double T, double w, double V, double Tw) const override { return m_.dcPower(T, w, V, Tw); }
 
  private:
   const emachine::EMachineModel& m_;
@@ -60,11 +62,13 @@ class Machine : public EmLimitModel {
 struct LoopResult {
   int steps = 0, clamped = 0;
   double regen_J = 0.0, boost_J = 0.0;
+  double max_pack_share = 0.0;  // max over steps of (e-machine DC power + DC/DC) / pack limit
 };
 
 // Crank speed ramps from w0 to w1 [rad/s] over T [s]; braking: the driver brakes at the wheels
 // (regen), else full-load traction. Battery: OCV 50 V, R 10 mΩ (a 48 V pack of this class).
-LoopResult closedLoop(bool with_limit_model, double w0, double w1, double T_s, bool braking) {
+LoopResult closedLoop(bool with_limit_model, double w0, double w1, double T_s, bool braking,
+                      double pack_limit_W = 60000.0, double dcdc_W = 0.0) {
   const double dt = 0.01, ocv = 50.0, R = 0.010;
   const EmsParams p = emsParams();
   ExpensiveFuel fuel;
@@ -93,8 +97,9 @@ LoopResult closedLoop(bool with_limit_model, double w0, double w1, double T_s, b
     in.dc_voltage_V = V;
     in.soc = 0.55;
     in.battery_T_K = 298.15;
-    in.discharge_limit_W = 60000.0;
-    in.charge_limit_W = 60000.0;
+    in.discharge_limit_W = pack_limit_W;
+    in.charge_limit_W = pack_limit_W;
+    in.dcdc_power_W = dcdc_W;
     const EmsDecision& d = ems.step(dt, in);
     emachine::EMachineInputs mi;
     mi.torque_request_Nm = d.em_torque_request_Nm;
@@ -106,8 +111,11 @@ LoopResult closedLoop(bool with_limit_model, double w0, double w1, double T_s, b
     if (std::fabs(m.torque_request_Nm - m.torque_Nm) > 1e-9 * (1.0 + std::fabs(m.torque_request_Nm))) ++r.clamped;
     if (m.torque_Nm > 0.0) r.boost_J += m.torque_Nm * w * dt;
     else r.regen_J -= m.torque_Nm * w * dt;
-    // the battery answers the e-machine's electric power P: V = OCV - R I with I = P / V
-    const double P = m.dc_power_W;
+    // what the pack is asked: the e-machine's DC power and the DC/DC's draw (> 0 discharge)
+    const double pack_W = m.dc_power_W + dcdc_W;
+    r.max_pack_share = std::max(r.max_pack_share, (braking ? -pack_W : pack_W) / pack_limit_W);
+    // the battery answers: V = OCV - R I with I = P / V
+    const double P = pack_W;
     V = 0.5 * (ocv + std::sqrt(ocv * ocv - 4.0 * R * P));
   }
   return r;
@@ -139,4 +147,20 @@ TEST(EmsLiveLimits, RegenerationIsNeverClampedAndLosesNothing) {
   EXPECT_GT(with.regen_J, 0.0);
   // the regenerated energy is the e-machine's limit either way (≤ 1 % lost to the prediction)
   EXPECT_GE(with.regen_J, 0.99 * without.regen_J);
+}
+
+TEST(EmsLiveLimits, ThePackIsNeverAskedBeyondItsLimitsWithTheDcDcLoad) {
+  // A cold pack (10 kW each way) with the 1.84 kW DC/DC load of the hybrid's 24 V net: boost and
+  // regeneration bounded by the pack exactly, by the e-machine's own loss model.
+  const double limit = 10000.0, dcdc = 1842.0;
+  const LoopResult boost = closedLoop(true, 80.0, 200.0, 3.0, false, limit, dcdc);
+  const LoopResult regen = closedLoop(true, 200.0, 80.0, 3.0, true, limit, dcdc);
+  std::printf("pack share: boost max %.6f, regen max %.6f\n", boost.max_pack_share, regen.max_pack_share);
+  EXPECT_LE(boost.max_pack_share, 1.0 + 1e-9);
+  EXPECT_LE(regen.max_pack_share, 1.0 + 1e-9);
+  EXPECT_EQ(boost.clamped, 0);
+  EXPECT_EQ(regen.clamped, 0);
+  // and bounded by it, not by a margin: the pack's limit is reached within 0.1 %
+  EXPECT_GT(boost.max_pack_share, 0.999);
+  EXPECT_GT(regen.max_pack_share, 0.999);
 }

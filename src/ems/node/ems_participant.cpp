@@ -74,6 +74,7 @@ void EmsParticipant::step(const ros::Time& t, double dt_s) {
   in.em_winding_T_K = m.winding_temperature_k;
   in.em_magnet_T_K = m.magnet_temperature_k;
   in.dc_voltage_V = b.terminal_voltage_v;
+  in.dcdc_power_W = b.dcdc_power_w;
   in.soc = b.soc;
   in.battery_T_K = b.cell_temperature_k;
   in.discharge_limit_W = b.discharge_power_limit_w;
