@@ -280,7 +280,7 @@ TEST(Rig, NoxSensitivityToIntakeTemperature) {
   // load), intake 310 / 330 K, NO kinetics at the dissociated and at the frozen burned-zone
   // temperature. Published (SAE 730213 correction, 40 CFR 86.1342-90 / UN R49 k_h,D): +0.0…0.54 %/K
   // for fuel/air 0.045…0.02 (src/engine_1d/README.md "Engine-out NOx"). Measured here:
-  // dissociated 1.46 %/K, frozen 1.51 %/K: dissociation at λ_flame 1.5 and ~90 bar lowers the NO
+  // dissociated 1.45 %/K, frozen 1.50 %/K: dissociation at λ_flame 1.5 and ~90 bar lowers the NO
   // by 12 % but damps the sensitivity by only ~3 % — the model stays ~3x above the published
   // band (the burned zone is too lean for dissociation to matter; see src/cylinder/README.md).
   auto sensitivity = [](bool dissociation, double& nox_mid_kg) {
