@@ -35,6 +35,7 @@
 
 #include "cylinder/cylinder_params.hpp"
 #include "cylinder/equilibrium.hpp"
+#include "cylinder/flame_temperature.hpp"
 #include "cylinder/zeldovich.hpp"
 
 namespace hbt::cylinder {
@@ -177,6 +178,11 @@ class Cylinder {
   void refreshPolys();  // zone polynomials, mass and m·R after any mass change
   void solveTemperatures(double V0, double V1, double Vu0, double Vb0, double Uu, double Ub);
   void noxInterval();
+  /// Burned-zone state for the NO kinetics over the interval [T_f mean, p mean]: temperature
+  /// (dissociated if nox/dissociation), equilibrium mole fractions, and the zone volume
+  /// scaled to that state. Returns false if the burned zone is empty.
+  bool noxConditions(double T_f, double p, double Vb, double& T, double x[kNumSpecies],
+                     double& V);
   void ignite(Pulse& k, double theta_soc, double omega);
   [[noreturn]] void diverged(const char* quantity, double value) const;
 
@@ -184,7 +190,8 @@ class Cylinder {
   std::string name_;
   GasThermo thermo_;
   SliderCrank crank_;
-  Equilibrium equil_;
+  Equilibrium equil_;      // burned-zone equilibrium at the frozen temperature (no dissociation)
+  DissociatedFlame flame_;  // burned-zone equilibrium at the dissociated temperature
   ZeldovichNO nox_;
 
   double theta_deg_ = -360.0, V_ = 0, p_ = 1e5;

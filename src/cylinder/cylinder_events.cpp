@@ -88,20 +88,9 @@ void Cylinder::ignite(Pulse& k, double theta_soc, double omega) {
 
 void Cylinder::noxInterval() {
   if (nox_t_ <= 0.0) return;
-  const double T = nox_Tt_ / nox_t_, p = nox_pt_ / nox_t_, Vb = nox_Vt_ / nox_t_;
-  double mb = 0.0;
-  std::array<double, 5> b{};
-  for (int g = 0; g < kNumGroups; ++g) {
-    mb += mb_[g];
-    for (int e = 0; e < 5; ++e) b[e] += mb_[g] * thermo_.elements(Group(g))[e];
-  }
-  if (mb > 0.0 && Vb > 0.0) {
-    for (double& x : b) x /= mb;
-    double x[kNumSpecies];
-    if (!equil_.solve(b, T, p, x)) {
-      equil_.reset();
-      if (!equil_.solve(b, T, p, x)) diverged("burned-zone equilibrium", T);
-    }
+  const double T_f = nox_Tt_ / nox_t_, p = nox_pt_ / nox_t_, Vb_f = nox_Vt_ / nox_t_;
+  double T, Vb, x[kNumSpecies];
+  if (noxConditions(T_f, p, Vb_f, T, x, Vb)) {
     nox_.setConditions(T, p, x);
     double cNO = n_NO_ / Vb, cN = n_N_ / Vb;
     nox_.integrate(nox_t_, cNO, cN, true);
@@ -110,6 +99,45 @@ void Cylinder::noxInterval() {
     n_N_ = cN * Vb;
   }
   nox_t_ = nox_Tt_ = nox_pt_ = nox_Vt_ = nox_deg_ = 0.0;
+}
+
+// Stages: element moles and frozen mass fractions of the burned zone; its equilibrium at the
+// frozen temperature T_f, or (nox/dissociation) at the dissociated temperature of the same
+// enthalpy (flame_temperature.hpp); the zone volume at that state, V = V_f n T/(n_f T_f) at the
+// same pressure, so that concentrations and the zone's NO moles agree.
+bool Cylinder::noxConditions(double T_f, double p, double Vb_f, double& T, double x[kNumSpecies],
+                             double& V) {
+  double mb = 0.0;
+  std::array<double, 5> b{};
+  double Y[kNumSpecies] = {};
+  for (int g = 0; g < kNumGroups; ++g) {
+    mb += mb_[g];
+    for (int e = 0; e < 5; ++e) b[e] += mb_[g] * thermo_.elements(Group(g))[e];
+    for (int s = 0; s < kNumSpecies; ++s) Y[s] += mb_[g] * thermo_.massFraction(Group(g), Species(s));
+  }
+  if (!(mb > 0.0 && Vb_f > 0.0)) return false;
+  for (double& v : b) v /= mb;
+  for (double& v : Y) v /= mb;
+  T = T_f;
+  V = Vb_f;
+  if (!P_.nox_dissociation) {
+    if (!equil_.solve(b, T_f, p, x)) {
+      equil_.reset();
+      if (!equil_.solve(b, T_f, p, x)) diverged("burned-zone equilibrium", T_f);
+    }
+    return true;
+  }
+  DissociatedFlame::Result r;
+  if (!flame_.solve(b, Y, T_f, p, r)) {
+    flame_.reset();
+    if (!flame_.solve(b, Y, T_f, p, r)) diverged("dissociated burned-zone temperature", T_f);
+  }
+  double n_f = 0.0;
+  for (int s = 0; s < kNumSpecies; ++s) n_f += Y[s] / species(Species(s)).M;
+  T = r.T_K;
+  for (int s = 0; s < kNumSpecies; ++s) x[s] = r.x[s];
+  V = Vb_f * (r.n_mol_kg * T) / (n_f * T_f);
+  return true;
 }
 
 void Cylinder::mergeZones() {

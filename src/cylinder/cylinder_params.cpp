@@ -102,6 +102,8 @@ void CylinderParams::declare(ParamSet& ps) {
   ps.add("enabled", nox_enabled, "integrate Zeldovich NO in the burned zone");
   ps.add("interval_deg", nox_interval_deg, "deg", 0.1, 20.0, "CVODE interval");
   ps.add("min_temperature_K", nox_min_temperature_K, "K", 1000.0, 2500.0, "NO frozen below");
+  ps.add("dissociation", nox_dissociation,
+         "NO kinetics at the equilibrium (dissociated) burned-zone temperature");
   ps.setPrefix("cylinder/numerics/");
   ps.add("max_substep_deg", max_substep_deg, "deg", 0.01, 5.0, "largest internal step");
   ps.setPrefix("");

@@ -50,6 +50,7 @@ struct CylinderParams {
   bool nox_enabled = true;
   double nox_interval_deg = 5.0;
   double nox_min_temperature_K = 1700.0;
+  bool nox_dissociation = true;  // NO kinetics at the dissociated burned-zone temperature
   double max_substep_deg = 1.0;
 
   CylinderParams();                  // typical HD common-rail defaults (see README)

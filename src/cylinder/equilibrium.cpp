@@ -138,4 +138,6 @@ bool Equilibrium::solve(const std::array<double, 5>& b, double T, double p_Pa,
   return ok;
 }
 
+double Equilibrium::molesPerKg() const { return std::exp(z_[4]); }
+
 }  // namespace hbt::cylinder

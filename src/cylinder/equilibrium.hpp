@@ -24,6 +24,8 @@ class Equilibrium {
   /// (kFuel entry set to 0). Returns false if Newton did not converge.
   bool solve(const std::array<double, 5>& b, double T_K, double p_Pa, double x_out[kNumSpecies]);
   int lastIterations() const { return iters_; }
+  /// Moles of the mixture per kg [mol/kg] of the last solution.
+  double molesPerKg() const;
   void reset() { warm_ = false; }
 
  private:

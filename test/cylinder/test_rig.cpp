@@ -274,3 +274,36 @@ TEST(Rig, NoxBatchIntervalConverges) {
     EXPECT_NEAR(no(12.0) / ref, 1.0, 0.08);
   }
 }
+
+TEST(Rig, NoxSensitivityToIntakeTemperature) {
+  // d ln(NOx)/dT_intake at fixed intake pressure, fuel and injection (1400 rpm, 64 mg, ~50 %
+  // load), intake 310 / 330 K, NO kinetics at the dissociated and at the frozen burned-zone
+  // temperature. Published (SAE 730213 correction, 40 CFR 86.1342-90 / UN R49 k_h,D): +0.0…0.54 %/K
+  // for fuel/air 0.045…0.02 (src/engine_1d/README.md "Engine-out NOx"). Measured here:
+  // dissociated 1.45 %/K, frozen 1.50 %/K: dissociation at λ_flame 1.5 and ~90 bar lowers the NO
+  // by 12 % but damps the sensitivity by only ~3 % — the model stays ~3x above the published
+  // band (the burned zone is too lean for dissociation to matter; see src/cylinder/README.md).
+  auto sensitivity = [](bool dissociation, double& nox_mid_kg) {
+    RigParams rp;
+    CylinderParams cp = test::loadParams(&rp);
+    cp.nox_dissociation = dissociation;
+    auto nox = [&](double T_K) {
+      RigParams r = rp;
+      r.T_intake_K = T_K;
+      SingleCylinderRig rig(cp, r);
+      return rig.runToPeriodic(8, 2e-3).nox_no2eq_kg;
+    };
+    const double lo = nox(310.0), hi = nox(330.0);
+    nox_mid_kg = std::sqrt(lo * hi);
+    return std::log(hi / lo) / 20.0;  // 1/K
+  };
+  double nox_d = 0.0, nox_f = 0.0;
+  const double s_d = sensitivity(true, nox_d), s_f = sensitivity(false, nox_f);
+  std::printf("[nox-dT] dissociated %.3f mg, %.2f %%/K; frozen %.3f mg, %.2f %%/K\n", nox_d * 1e6,
+              100 * s_d, nox_f * 1e6, 100 * s_f);
+  EXPECT_LT(nox_d, 0.95 * nox_f);  // the dissociated hot zone is cooler
+  EXPECT_GT(nox_d, 0.70 * nox_f);  // but at λ 1.5 and ~90 bar only by ~30–50 K
+  EXPECT_LT(s_d, s_f);             // and responds less to the charge temperature
+  EXPECT_GT(s_d, 0.0);
+  EXPECT_LT(s_d, 0.02);  // guard: the 1D engine's frozen model measured +2.2–2.6 %/K
+}

@@ -81,7 +81,7 @@ TEST(Params, ConfigFileLoadsAndBadKeysAreNamed) {
   const CylinderParams cp = test::loadParams(&rp);
   EXPECT_DOUBLE_EQ(cp.geometry.bore_m, 0.104);
   EXPECT_EQ(cp.nozzle.holes, 8);
-  EXPECT_DOUBLE_EQ(cp.soi_main(1400, 0.5), 3.0);  // NOx-calibrated map: 3 deg aTDC
+  EXPECT_DOUBLE_EQ(cp.soi_main(1400, 0.5), 2.0);  // NOx-calibrated map: 2 deg aTDC
   EXPECT_DOUBLE_EQ(cp.rail_pressure(1200, 0.5), 0.5 * (1000 + 1300));  // bilinear
   EXPECT_DOUBLE_EQ(rp.speed_rpm, 1400.0);
   // A misspelt key and a table of the wrong size are rejected with file and key.

@@ -77,6 +77,9 @@ Result runCycle(const Args& a, const std::string& solver, const std::string& csv
   if (!solver.empty()) p.engine.solver = solver;
   Engine1D eng(p, a.root);
   const auto& ref = eng.reference();
+  // The engine's own reference map engine runs without the NOx map (it is derived from this
+  // engine); the map engine of the missions (config engine_map.yaml) loads it.
+  const hbt::engine_map::MapEngine nox_ref(p.reference, a.root);
   auto fl = [&](double rpm) { return ref.fullLoadTorque(hbt::units::rpmToRadps(rpm)); };
   auto mot = [&](double rpm) { return ref.motoringTorque(hbt::units::rpmToRadps(rpm)); };
   const double n_idle = 700.0 * ref.scaling().speed_factor;
@@ -124,7 +127,7 @@ Result runCycle(const Args& a, const std::string& solver, const std::string& csv
       ++limiter_count[who];
     }
     r.fuel_map_act += ref.steadyFuel(w, o.brake_torque_Nm) * a.dt;
-    r.nox_map_act += ref.noxEmissionIndex(w, o.brake_torque_Nm) * ref.steadyFuel(w, o.brake_torque_Nm) * a.dt;
+    r.nox_map_act += nox_ref.noxEmissionIndex(w, o.brake_torque_Nm) * nox_ref.steadyFuel(w, o.brake_torque_Nm) * a.dt;
     r.fuel_map_ref += ref.steadyFuel(w, T) * a.dt;
     r.work_act += std::max(o.brake_torque_Nm, 0.0) * w * a.dt;
     r.work_ref += std::max(T, 0.0) * w * a.dt;
