@@ -7,8 +7,7 @@
 
 namespace hbt::ems {
 
-EmsModel::EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_supported)
-    : p_(p), fuel_(fuel), stop_start_supported_(stop_start_supported) {
+EmsModel::EmsModel(const EmsParams& p, const FuelModel& fuel) : p_(p), fuel_(fuel) {
   reset();
 }
 
@@ -44,7 +43,7 @@ const EmsDecision& EmsModel::step(double dt, const EmsInputs& in) {
   // 1. Stop-start.
   Reason standing = Reason::EcmsOptimum;  // why a standing engine keeps running (if it does)
   if (state_ == State::Running && in.stopped && !in.start_request) {
-    if (!(ss.enabled && stop_start_supported_)) {
+    if (!ss.enabled) {
       standing = Reason::StopStartDisabled;
     } else if (!warm) {
       standing = Reason::WarmupInhibit;

@@ -14,7 +14,9 @@
                                     one table per engine (fuel, warm-up, fan energy, charge air,
                                     light-off, engine-out and tailpipe NOx, balances, wall/sim);
                                     N runs at a time (default 1: wall/sim undisturbed)
-  scripts/twin bench hybrid [--engines map,1d] [--until S] [--jobs N]  the hybrid's saving:
+  scripts/twin bench hybrid [--engines map,1d] [--until S] [--jobs N]  the hybrid's saving and its
+                                    stop-start check (every stop served, the engine restarted:
+                                    exit 1 otherwise):
                                     baseline_urban and hybrid_urban at 0, 25 and 40 degC for each
                                     engine (nodelets; the baseline with the same Gauss-Seidel
                                     torque chain [[vehicle, aftertreatment, cooling], [engine]] as
@@ -246,9 +248,26 @@ HYBRID_ROWS = [("fuel_kg", "fuel [kg]", "%.3f"), ("fuel_soc_corrected_kg", "fuel
                ("soc_final", "final SOC [-]", "%.3f"), ("battery_max_c", "max cell T [°C]", "%.1f"),
                ("winding_max_c", "max winding T [°C]", "%.1f"), ("em_derating_s", "EM derating [s]", "%.0f"),
                ("em_clamped_s", "EM request clamped [s]", "%.1f"), ("battery_limited_s", "battery request limited [s]", "%.1f"),
+               ("stops_served", "stops served", "%d"),
                ("engine_off_s", "engine off [s]", "%.0f"), ("engine_starts", "restarts", "%d"),
+               ("cranking_kj_per_start", "e-machine cranking work per start [kJ]", "%.1f"),
                ("warmup_inhibit_s", "warm-up inhibit [s]", "%.0f"),
                ("electric_path_closure", "electric-path balance", "%.1e"), ("speed_rmse_kmh", "speed RMSE [km/h]", "%.2f")]
+
+
+def stop_start_failures(summary, until):
+    """What a hybrid run's stop-start did wrong: every stop of the mission served (stops_served of
+    stops_total) and, on the full mission, the engine stopped and restarted at least once (the
+    EMS's engine_starts; with either engine model). [] when all is well; a missing run is one."""
+    if not summary:
+        return ["the run failed"]
+    bad = []
+    served, total = summary.get("stops_served"), summary.get("stops_total")
+    if served is None or total is None or served != total:
+        bad.append("stops served %s of %s" % (served, total))
+    if not until and not summary.get("engine_starts", 0) > 0:
+        bad.append("no engine restart (engine_starts %s)" % summary.get("engine_starts"))
+    return bad
 
 
 def bench_hybrid(a):
@@ -283,6 +302,7 @@ def bench_hybrid(a):
                     hs.update(json.load(f))
                     hs["compute_time_s"] = cpu
     table = {}
+    failures = []
     for engine in engines:
         lines = ["VECTO Urban%s, nodelets, %d run(s) at a time; both runs of a pair with the torque chain stepped "
                  "without delay (Gauss-Seidel groups). Saving = (baseline fuel - hybrid fuel corrected for the "
@@ -299,12 +319,18 @@ def bench_hybrid(a):
                     table["%s_%s_%d" % (name, engine, amb)] = s
             wall = lambda s: ("%.4f" % (s["wall_time_s"] / s["sim_time_s"])) if s else "-"
             lines += ["| wall/sim | %s | %s |" % (wall(bs), wall(hs)), ""]
+            bad = stop_start_failures(hs, a.until)
+            failures += ["%s engine, %d °C: %s" % (engine, amb, m) for m in bad]
+            lines += ["Stop-start check (every stop served%s): %s" % (
+                "" if a.until else ", engine restarted", "; ".join(bad) if bad else "ok"), ""]
         print("\n".join(lines))
         a.measurement.write("hybrid_%s" % engine, "Baseline against 48 V P1 hybrid at 0, 25 and 40 °C, %s engine" % engine,
                             lines, bool(a.until))
     with open(os.path.join(REPO, "results", "bench", "hybrid.json"), "w") as f:
         json.dump(table, f, indent=2)
-    return 0 if all(s for _, s in results.values()) else 1
+    for m in failures:
+        print("bench: hybrid stop-start check failed: " + m, file=sys.stderr)
+    return 0 if all(s for _, s in results.values()) and not failures else 1
 
 
 def bench_rates(a):
