@@ -250,7 +250,6 @@ HYBRID_ROWS = [("fuel_kg", "fuel [kg]", "%.3f"), ("fuel_soc_corrected_kg", "fuel
                ("em_clamped_s", "EM request clamped [s]", "%.1f"), ("battery_limited_s", "battery request limited [s]", "%.1f"),
                ("stops_served", "stops served", "%d"),
                ("engine_off_s", "engine off [s]", "%.0f"), ("engine_starts", "restarts", "%d"),
-               ("cranking_kj_per_start", "e-machine cranking work per start [kJ]", "%.1f"),
                ("warmup_inhibit_s", "warm-up inhibit [s]", "%.0f"),
                ("electric_path_closure", "electric-path balance", "%.1e"), ("speed_rmse_kmh", "speed RMSE [km/h]", "%.2f")]
 

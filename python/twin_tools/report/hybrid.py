@@ -5,8 +5,7 @@ Every key is left out when the node that owns it did not run.
 Summary keys: em_boost_kwh (crank work of the e-machine while motoring), em_brake_kwh (crank work
 it absorbed while generating, positive: regenerative braking + load-point shift), em_regen_kwh
 (the part absorbed while the EMS was in regen mode, booked per bag interval by the mode at the
-interval's end), em_cranking_kwh (its motoring work at the crank in the bag intervals that start
-or end cranking: the engine starts) and cranking_kj_per_start, em_loss_kwh, battery_loss_kwh, battery_heat_kwh, dcdc_kwh, soc_initial,
+interval's end), em_loss_kwh, battery_loss_kwh, battery_heat_kwh, dcdc_kwh, soc_initial,
 soc_final, soc_min and soc_max (the lowest and highest SOC of the run's bag samples), battery_max_c, winding_max_c, em_derating_s (time with the e-machine's live limits
 below its peak envelope), em_clamped_s (time the EMS asked beyond the e-machine's live limits and
 the e-machine clamped), battery_limited_s (time the battery's power request exceeded its limits), engine_off_s, engine_starts, cranking_s, warmup_inhibit_s,
@@ -38,7 +37,7 @@ ENGINE_STATE = wiring.topic("engine", "state")
 VEHICLE_STATE = wiring.topic("vehicle", "state")
 
 J_PER_KWH = 3.6e6
-MODE_REGEN, MODE_STOPPED, MODE_CRANKING = 2, 4, 5
+MODE_REGEN, MODE_STOPPED = 2, 4
 
 
 def _l(d, f):
@@ -53,15 +52,6 @@ def _interval_by_mode(cum, t_cum, mode, t_mode, which):
     return float(np.sum(inc[mode[1:n] == which]))
 
 
-def _interval_touching_mode(cum, mode, which):
-    """Sum of the increments of a cumulative series over bag intervals that start or end with
-    mode == which (a short phase, e.g. cranking, inside a few bag intervals)."""
-    n = min(len(cum), len(mode))
-    inc = np.diff(cum[:n])
-    m = mode[:n] == which
-    return float(np.sum(inc[m[1:] | m[:-1]]))
-
-
 def hybrid_summary(data, summary):
     s = {}
     em, bat, ems = data.get(EMACHINE_STATE), data.get(BATTERY_STATE), data.get(EMS_COMMAND)
@@ -73,11 +63,6 @@ def hybrid_summary(data, summary):
     if ems is not None:
         s["em_regen_kwh"] = -_interval_by_mode(em["mech_generating_energy_j"], em["t"], ems["mode"], ems["t"],
                                                MODE_REGEN) / J_PER_KWH
-        crank_J = _interval_touching_mode(em["mech_motoring_energy_j"], ems["mode"], MODE_CRANKING)
-        s["em_cranking_kwh"] = crank_J / J_PER_KWH
-        starts = int(_l(ems, "engine_starts"))
-        if starts > 0:
-            s["cranking_kj_per_start"] = crank_J / starts / 1e3
     loss_fields = ["copper_loss_energy_j", "iron_loss_energy_j", "rotor_loss_energy_j",
                    "mechanical_loss_energy_j", "inverter_loss_energy_j", "ratio_loss_energy_j"]
     s["em_loss_kwh"] = sum(_l(em, f) for f in loss_fields) / J_PER_KWH
