@@ -196,10 +196,18 @@ void Engine1D::computeOutputs(double dt, double w, const Engine1DInputs& in) {
   o.sim_time_s += dt;
   o.gas_steps = A.steps();
   (void)in;
-  for (double v : {o.brake_torque_Nm, o.fuel_mass_flow_kg_s, o.boost_pressure_Pa, o.turbo_speed_rad_s,
-                   o.lambda, o.air_mass_flow_kg_s, o.exhaust_mass_flow_kg_s, o.exhaust_T_K,
-                   o.nox_mass_flow_kg_s, o.coolant_heat_W, o.turbine_inlet_p_Pa, o.turbine_inlet_T_K})
-    check(v, "output");
+  check(o.brake_torque_Nm, "brake_torque_Nm");
+  check(o.fuel_mass_flow_kg_s, "fuel_mass_flow_kg_s");
+  check(o.boost_pressure_Pa, "boost_pressure_Pa");
+  check(o.turbo_speed_rad_s, "turbo_speed_rad_s");
+  check(o.lambda, "lambda");
+  check(o.air_mass_flow_kg_s, "air_mass_flow_kg_s");
+  check(o.exhaust_mass_flow_kg_s, "exhaust_mass_flow_kg_s");
+  check(o.exhaust_T_K, "exhaust_T_K");
+  check(o.nox_mass_flow_kg_s, "nox_mass_flow_kg_s");
+  check(o.coolant_heat_W, "coolant_heat_W");
+  check(o.turbine_inlet_p_Pa, "turbine_inlet_p_Pa");
+  check(o.turbine_inlet_T_K, "turbine_inlet_T_K");
 }
 
 }  // namespace hbt::engine_1d
