@@ -11,6 +11,9 @@
 namespace hbt::engine_1d {
 namespace {
 constexpr double kStoppedRadS = units::rpmToRadps(200.0);  // lowest speed of a reset()
+// Below this the crank stands (omega = 0): the vehicle's friction stops it exponentially, so its
+// speed decays through denormals, where omega dt underflows and W/(omega dt) is 0/0 [rad/s]
+constexpr double kStandingRadS = 1e-6;
 
 double threadCpu() {
   timespec ts;
@@ -84,7 +87,8 @@ const Engine1DOutputs& Engine1D::step(double dt, const Engine1DInputs& in) {
     if (!std::isfinite(v)) throw ModelDivergence("engine_1d inputs", "input", "non-finite input");
   if (!(in.ambient_T_K > 150.0 && in.ambient_p_Pa > 3e4))
     throw ModelDivergence("engine_1d inputs", "ambient", "ambient state out of range");
-  const double w = std::max(in.speed_rad_s, 0.0);  // the driveline never turns it backwards
+  // the driveline never turns it backwards; below kStandingRadS it stands
+  const double w = in.speed_rad_s >= kStandingRadS ? in.speed_rad_s : 0.0;
   out_.max_torque_Nm = ref_->fullLoadTorque(w);
   out_.min_torque_Nm = ref_->motoringTorque(w);
   EngineAssembly& A = *asm_;
