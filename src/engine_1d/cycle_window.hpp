@@ -84,7 +84,8 @@ class CycleWindow {
   void mean(Out& out) const {
     const Bin& o = bins_[(cur_ + 1) % kStore];
     // outside fraction of the oldest bin: the current bin's fill (angle or, capped, time)
-    const double cut = std::min(1.0, std::max(angle_in_bin_ / kBinDeg, bins_[cur_].dt / bin_max_dt_));
+    const double cut =
+        std::min(1.0, std::max(angle_in_bin_ / kBinDeg, bins_[cur_].dt / bin_max_dt_));
     const double T = sum_.dt - cut * o.dt;
     for (int c = 0; c < kChannels; ++c) out[c] = T > 0.0 ? (sum_.I[c] - cut * o.I[c]) / T : 0.0;
   }

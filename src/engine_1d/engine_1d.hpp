@@ -25,9 +25,10 @@
 //   coolant heat     <Q_wall> + friction_to_coolant <T_f> w
 //   back pressure    input if > 0, else p_amb + K_b <mdot_exh>^2 T/p (orifice law of the ATS)
 // Limits: full-load and motoring torque from the reference (map) curve at w.
-// Any crank speed w >= 0 (engine_assembly.hpp; below 1e-6 rad/s the crank stands, w = 0): the gas dynamics, turbocharger and cylinders run
-// down to standstill and at rest (the gas relaxes in time); the means are over one cycle or, when
-// a cycle takes longer than numerics/cycle_window_max_s (below 400 rpm), over that time.
+// Any crank speed w >= 0 (engine_assembly.hpp; below 1e-6 rad/s the crank stands, w = 0): the
+// gas dynamics, turbocharger and cylinders run down to standstill and at rest (the gas relaxes in
+// time); the means are over one cycle or, when a cycle takes longer than
+// numerics/cycle_window_max_s (below 400 rpm), over that time.
 // Errors: InputError (file, key) at construction; ModelDivergence naming the element (pipe, cell,
 // volume, cylinder, turbine, shaft) in step(); every output is checked finite.
 #pragma once
