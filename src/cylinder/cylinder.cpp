@@ -115,11 +115,14 @@ void Cylinder::advance(double dt, double omega, const PortFlows& f) {
 void Cylinder::substep(double dt, double omega, const PortFlows& f) {
   SubstepState s = beginSubstep(dt, omega, f);
   exchangeValveFlows(f, s);
-  if (closed_ && combustion_on_) {
+  // Injection, ignition and burn are scheduled in crank angle: a crank at rest (omega = 0,
+  // the stopped engine) advances none of them; its gas still exchanges mass and wall heat.
+  const bool turning = s.dth > 0.0;
+  if (closed_ && combustion_on_ && turning) {
     injectFuel(s);
     advanceIgnitionDelay(s);
   }
-  if (combustion_on_) burnFuel(s);
+  if (combustion_on_ && turning) burnFuel(s);
   qwall_W_ = 0.0;
   if (heat_transfer_on_) transferWallHeat(s);
   clampUnburnedMasses();

@@ -7,9 +7,8 @@
 
 namespace hbt::ems {
 
-EmsModel::EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_supported,
-                   const EmLimitModel* em_limits)
-    : p_(p), fuel_(fuel), stop_start_supported_(stop_start_supported), em_limits_(em_limits) {
+EmsModel::EmsModel(const EmsParams& p, const FuelModel& fuel, const EmLimitModel* em_limits)
+    : p_(p), fuel_(fuel), em_limits_(em_limits) {
   reset();
 }
 
@@ -84,7 +83,7 @@ const EmsDecision& EmsModel::decide(double dt, const EmsInputs& in) {
   // 1. Stop-start.
   Reason standing = Reason::EcmsOptimum;  // why a standing engine keeps running (if it does)
   if (state_ == State::Running && in.stopped && !in.start_request) {
-    if (!(ss.enabled && stop_start_supported_)) {
+    if (!ss.enabled) {
       standing = Reason::StopStartDisabled;
     } else if (!warm) {
       standing = Reason::WarmupInhibit;

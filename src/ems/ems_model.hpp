@@ -82,7 +82,7 @@ enum class Reason : uint8_t {
   SocRestart = 10,        // restart: SOC fell below soc_restart
   CooledRestart = 11,     // restart: the coolant fell below coolant_warm_K
   NotConnected = 12,      // converter open / neutral / shifting / low speed: no regen
-  StopStartDisabled = 13, // standing but stop-start is off (config or engine model)
+  StopStartDisabled = 13, // standing but stop-start is off (config stop_start/enabled)
   Overrun = 14,           // no traction demand: engine motoring, EM idle
 };
 
@@ -127,8 +127,7 @@ class EmsModel {
  public:
   /// em_limits: the e-machine's limit model (nullptr: the published limits, see above); it must
   /// outlive the EmsModel.
-  EmsModel(const EmsParams& p, const FuelModel& fuel, bool stop_start_supported = true,
-           const EmLimitModel* em_limits = nullptr);
+  EmsModel(const EmsParams& p, const FuelModel& fuel, const EmLimitModel* em_limits = nullptr);
   /// Engine running, counters and the SOC integral cleared.
   void reset();
   /// Decides the split for the next step of length dt_s [s]. Throws ModelDivergence on
@@ -150,7 +149,6 @@ class EmsModel {
 
   EmsParams p_;
   const FuelModel& fuel_;
-  bool stop_start_supported_ = true;
   const EmLimitModel* em_limits_ = nullptr;
   State state_ = State::Running;
   double soc_integral_ = 0.0, on_time_s_ = kRunningForever_s, crank_time_s_ = 0.0;

@@ -10,7 +10,10 @@
 
 namespace hbt::engine_1d {
 namespace {
-constexpr double kStoppedRadS = units::rpmToRadps(200.0);
+constexpr double kStoppedRadS = units::rpmToRadps(200.0);  // lowest speed of a reset()
+// Below this the crank stands (omega = 0): the vehicle's friction stops it exponentially, so its
+// speed decays through denormals, where omega dt underflows and W/(omega dt) is 0/0 [rad/s]
+constexpr double kStandingRadS = 1e-6;
 
 double threadCpu() {
   timespec ts;
@@ -84,20 +87,10 @@ const Engine1DOutputs& Engine1D::step(double dt, const Engine1DInputs& in) {
     if (!std::isfinite(v)) throw ModelDivergence("engine_1d inputs", "input", "non-finite input");
   if (!(in.ambient_T_K > 150.0 && in.ambient_p_Pa > 3e4))
     throw ModelDivergence("engine_1d inputs", "ambient", "ambient state out of range");
-  const double w = in.speed_rad_s;
-  out_.max_torque_Nm = ref_->fullLoadTorque(std::max(w, 0.0));
-  out_.min_torque_Nm = ref_->motoringTorque(std::max(w, 0.0));
-  if (w < kStoppedRadS) {  // stopped / cranking: gas dynamics frozen
-    out_.brake_torque_Nm = out_.indicated_torque_Nm = out_.friction_torque_Nm = 0.0;
-    out_.fuel_mass_flow_kg_s = out_.air_mass_flow_kg_s = out_.exhaust_mass_flow_kg_s = 0.0;
-    out_.nox_mass_flow_kg_s = out_.coolant_heat_W = 0.0;
-    out_.lambda = 0.0;
-    out_.fuel_cut = true;
-    out_.sim_time_s += dt;
-    out_.cpu_time_s = threadCpu() - cpu0;
-    out_.cpu_time_total_s += out_.cpu_time_s;
-    return out_;
-  }
+  // the driveline never turns it backwards; below kStandingRadS it stands
+  const double w = in.speed_rad_s >= kStandingRadS ? in.speed_rad_s : 0.0;
+  out_.max_torque_Nm = ref_->fullLoadTorque(w);
+  out_.min_torque_Nm = ref_->motoringTorque(w);
   EngineAssembly& A = *asm_;
   CycleMeans m;
   A.cycleMeans(m);
@@ -135,6 +128,7 @@ const Engine1DOutputs& Engine1D::step(double dt, const Engine1DInputs& in) {
   // gas dynamics and cylinders
   A.advance(dt, w);
   computeOutputs(dt, w, in);
+  computeCrankTorque(w);
   // Brake work of the published (cycle-mean) torque over this macro step, split by sign as the
   // map engine does, so the vehicle-side energy balance sees the same numbers.
   const double work_J = out_.brake_torque_Nm * w * dt;
@@ -143,6 +137,21 @@ const Engine1DOutputs& Engine1D::step(double dt, const Engine1DInputs& in) {
   out_.cpu_time_s = threadCpu() - cpu0;
   out_.cpu_time_total_s += out_.cpu_time_s;
   return out_;
+}
+
+// The torque on the crank over this macro step, T_c = (W_ind - W_f)/(omega dt): the exact mean
+// over the step's crank angle (compression pulses resolved: the load of a crank that is cranked;
+// the cycle mean would smear them over 720 deg and book another energy than the crank
+// exchanged). At omega = 0: the gas torque at the standing crank angle less the friction
+// (Coulomb: the crank turns only if the gas pushes harder than the friction holds).
+void Engine1D::computeCrankTorque(double w) {
+  const EngineAssembly& A = *asm_;
+  const EngineAssembly::Interval& iv = A.lastInterval();
+  const double angle = w * iv.duration_s;
+  const double T_ind = angle > 0.0 ? iv.indicated_J / angle : A.gasTorque_Nm();
+  const double T_f = angle > 0.0 ? iv.friction_J / angle : A.frictionTorque();
+  out_.crank_torque_Nm = T_ind - T_f;
+  check(out_.crank_torque_Nm, "crank torque");
 }
 
 void Engine1D::computeOutputs(double dt, double w, const Engine1DInputs& in) {
@@ -191,10 +200,18 @@ void Engine1D::computeOutputs(double dt, double w, const Engine1DInputs& in) {
   o.sim_time_s += dt;
   o.gas_steps = A.steps();
   (void)in;
-  for (double v : {o.brake_torque_Nm, o.fuel_mass_flow_kg_s, o.boost_pressure_Pa, o.turbo_speed_rad_s,
-                   o.lambda, o.air_mass_flow_kg_s, o.exhaust_mass_flow_kg_s, o.exhaust_T_K,
-                   o.nox_mass_flow_kg_s, o.coolant_heat_W, o.turbine_inlet_p_Pa, o.turbine_inlet_T_K})
-    check(v, "output");
+  check(o.brake_torque_Nm, "brake_torque_Nm");
+  check(o.fuel_mass_flow_kg_s, "fuel_mass_flow_kg_s");
+  check(o.boost_pressure_Pa, "boost_pressure_Pa");
+  check(o.turbo_speed_rad_s, "turbo_speed_rad_s");
+  check(o.lambda, "lambda");
+  check(o.air_mass_flow_kg_s, "air_mass_flow_kg_s");
+  check(o.exhaust_mass_flow_kg_s, "exhaust_mass_flow_kg_s");
+  check(o.exhaust_T_K, "exhaust_T_K");
+  check(o.nox_mass_flow_kg_s, "nox_mass_flow_kg_s");
+  check(o.coolant_heat_W, "coolant_heat_W");
+  check(o.turbine_inlet_p_Pa, "turbine_inlet_p_Pa");
+  check(o.turbine_inlet_T_K, "turbine_inlet_T_K");
 }
 
 }  // namespace hbt::engine_1d

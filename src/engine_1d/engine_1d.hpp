@@ -11,6 +11,10 @@
 // Output definitions (all SI):
 //   brake torque     T_b = <T_ind> - <T_f>: one-cycle (720 deg) moving mean of the indicated
 //                    torque sum_k dW_k/dt / w minus the Chen-Flynn friction torque
+//   crank torque     T_c = (W_ind - W_f)/(w dt): the mean over the macro step (the exact energy
+//                    exchange with the crank, compression pulses resolved); at w = 0 the gas
+//                    torque sum_k p_k dV_k/dtheta less the friction torque. What the twin's
+//                    crank sees while the engine is off (engine_1d_model.hpp)
 //   flows            one-cycle means (fuel: injected mass / time; air: compressor delivery;
 //                    exhaust: downpipe outlet into the back-pressure reservoir)
 //   exhaust T        <H_out>/(<mdot_out> cp_exh) at the downpipe outlet (total temperature)
@@ -20,8 +24,11 @@
 //   NOx              engine-out NO as NO2 (Zeldovich, released at exhaust-valve opening)
 //   coolant heat     <Q_wall> + friction_to_coolant <T_f> w
 //   back pressure    input if > 0, else p_amb + K_b <mdot_exh>^2 T/p (orifice law of the ATS)
-// Limits: full-load and motoring torque from the reference (map) curve at w. Below 200 rpm the
-// engine is treated as stopped (gas dynamics frozen, zero torque and flows).
+// Limits: full-load and motoring torque from the reference (map) curve at w.
+// Any crank speed w >= 0 (engine_assembly.hpp; below 1e-6 rad/s the crank stands, w = 0): the
+// gas dynamics, turbocharger and cylinders run down to standstill and at rest (the gas relaxes in
+// time); the means are over one cycle or, when a cycle takes longer than
+// numerics/cycle_window_max_s (below 400 rpm), over that time.
 // Errors: InputError (file, key) at construction; ModelDivergence naming the element (pipe, cell,
 // volume, cylinder, turbine, shaft) in step(); every output is checked finite.
 #pragma once
@@ -51,6 +58,7 @@ struct ExhaustComposition {  // mass fractions [-]
 
 struct Engine1DOutputs {
   double brake_torque_Nm = 0;          // one-cycle mean (see header)
+  double crank_torque_Nm = 0;          // mean over the last macro step (see header)
   double indicated_torque_Nm = 0;      // one-cycle mean, net (incl. pumping)
   double friction_torque_Nm = 0;       // Chen-Flynn
   double fuel_mass_flow_kg_s = 0;
@@ -107,6 +115,7 @@ class Engine1D {
 
  private:
   void computeOutputs(double dt, double w, const Engine1DInputs& in);
+  void computeCrankTorque(double w);
   Engine1DParams P_;
   std::unique_ptr<turbo::Turbocharger> tc_;
   std::unique_ptr<engine_map::MapEngine> ref_;

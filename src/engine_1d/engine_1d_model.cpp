@@ -1,5 +1,6 @@
 #include "engine_1d/engine_1d_model.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "common/units.hpp"
@@ -12,7 +13,8 @@ Engine1DModel::Engine1DModel(const Engine1DParams& p, const std::string& repo_ro
 void Engine1DModel::resetModel(const engine::EngineInputs& in) {
   engine_.reset(in.speed_rad_s, 0.0, in.ambient_T_K, in.ambient_p_Pa, kWarmCoolant_K);
   gas_steps_at_status_ = 0;
-  copyOutputs(in.speed_rad_s);
+  positive_work_J_ = motoring_work_J_ = 0.0;
+  copyOutputs(in.speed_rad_s, true);
 }
 
 void Engine1DModel::stepModel(double dt_s, const engine::EngineInputs& in) {
@@ -25,20 +27,24 @@ void Engine1DModel::stepModel(double dt_s, const engine::EngineInputs& in) {
   e.coolant_T_K = in.coolant_T_K > 0.0 ? in.coolant_T_K : kWarmCoolant_K;
   e.fuel_enabled = in.fuel_enabled;
   engine_.step(dt_s, e);
-  copyOutputs(in.speed_rad_s);
+  copyOutputs(in.speed_rad_s, in.fuel_enabled);
+  const double work_J = out_.brake_torque_Nm * std::max(in.speed_rad_s, 0.0) * dt_s;
+  (work_J > 0.0 ? positive_work_J_ : motoring_work_J_) += work_J;
+  out_.positive_work_J = positive_work_J_;
+  out_.motoring_work_J = motoring_work_J_;
 }
 
-void Engine1DModel::copyOutputs(double w) {
+void Engine1DModel::copyOutputs(double w, bool fuel_enabled) {
   const Engine1DOutputs& o = engine_.outputs();
   engine::EngineOutputs& v = out_;
-  v.brake_torque_Nm = o.brake_torque_Nm;
+  v.brake_torque_Nm = fuel_enabled ? o.brake_torque_Nm : o.crank_torque_Nm;
   v.max_torque_Nm = engine_.fullLoadTorque(w);
   v.min_torque_Nm = engine_.motoringTorque(w);
   v.friction_correction_Nm = v.pumping_correction_Nm = 0.0;
   v.fuel_mass_flow_kg_s = o.fuel_mass_flow_kg_s;
   v.fuel_mass_kg = o.fuel_mass_kg;
-  v.positive_work_J = o.positive_work_J;
-  v.motoring_work_J = o.motoring_work_J;
+  v.positive_work_J = positive_work_J_;
+  v.motoring_work_J = motoring_work_J_;
   v.boost_pressure_Pa = o.boost_pressure_Pa;
   v.charge_air_T_K = o.intake_manifold_T_K;
   v.turbo_speed_rad_s = o.turbo_speed_rad_s;

@@ -6,6 +6,13 @@
 // temperature kWarmCoolant_K (Engine1DInputs::coolant_T_K, 363.15 K: friction oil viscosity and
 // wall temperatures of the warm engine); back_pressure_Pa <= 0 selects Engine1D's own orifice
 // law of the exhaust system. The reset is warm as well (coolant kWarmCoolant_K). Outputs:
+//   brake_torque_Nm     Engine1D's one-cycle mean while fuel is enabled; its crank torque (the
+//                       mean over the step, compression pulses resolved; at rest the gas torque
+//                       less friction) while the engine is off (fuel_enabled false: stopped by
+//                       the EMS, spinning down, cranked by the e-machine): the torque the
+//                       vehicle's crank dynamics integrate (engine_1d/README.md "Stop and restart")
+//   positive/motoring_work_J  Σ of that published torque x ω Δt, split by sign (the interface's
+//                       definition)
 //   max/min_torque_Nm   the reference map's full-load and motoring torque at ω (warm, uncorrected)
 //   friction/pumping_correction_Nm  0 (friction and pumping are inside the cycle simulation)
 // Idle speed: the reference engine's MapEngineParams::idle_speed_rad_s (engine_map.yaml, the
@@ -41,9 +48,10 @@ class Engine1DModel : public engine::EngineModel {
   void stepModel(double dt_s, const engine::EngineInputs& in) override;
 
  private:
-  void copyOutputs(double speed_rad_s);
+  void copyOutputs(double speed_rad_s, bool fuel_enabled);
   Engine1D engine_;
   long gas_steps_at_status_ = 0;  // coupled sub-steps counted at the last status
+  double positive_work_J_ = 0.0, motoring_work_J_ = 0.0;  // of the published torque [J]
 };
 
 }  // namespace hbt::engine_1d

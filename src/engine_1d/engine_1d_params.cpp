@@ -127,6 +127,10 @@ void Engine1DConfig::declare(ParamSet& ps) {
          "cylinder sub-step while a valve is open (EVO..IVC) if larger than cylinder_substep_deg");
   ps.add("numerics/nox_interval_deg", nox_interval_deg, "deg", 0.0, 20.0,
          "> 0 overrides cylinder/nox/interval_deg");
+  ps.add("numerics/cycle_window_max_s", cycle_window_max_s, "s", 0.01, 10.0,
+         "longest window of the published cycle means (a cycle slower than this: the last S seconds)");
+  ps.add("numerics/coupling_cylinder_cfl_slow", coupling_cylinder_cfl_slow, "-", 0.01, 2.0,
+         "coupling_cylinder_cfl below the slow-crank speed 720 deg / cycle_window_max_s");
   ps.add("numerics/initial_turbo_speed_rpm", initial_turbo_speed_rpm, "rpm", 0.0, 2e5,
          "turbo speed at reset (scaled with the requested load)");
   ps.add("calibration/woschni_multiplier", woschni_multiplier, "-", 0.0, 3.0,

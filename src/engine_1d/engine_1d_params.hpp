@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "common/params.hpp"
+#include "common/units.hpp"
 #include "cylinder/cylinder_params.hpp"
 #include "engine_map/map_engine.hpp"
 #include "turbo/turbo_config.hpp"
@@ -91,6 +92,10 @@ struct Engine1DConfig {
   double cylinder_substep_deg = 0.0;     // > 0 overrides cylinder/numerics/max_substep_deg
   double cylinder_substep_open_deg = 0.0;  // sub-step while a valve is open (EVO..IVC), if larger
   double nox_interval_deg = 0.0;         // > 0 overrides cylinder/nox/interval_deg
+  double cycle_window_max_s = 0.3;       // longest window of the cycle means [s] (slow crank)
+  double coupling_cylinder_cfl_slow = 0.5;  // the cylinder limit's cfl on a slow crank
+  /// Below this crank speed a 720 deg cycle takes longer than cycle_window_max_s [rad/s].
+  double slowCrank_rad_s() const { return 4.0 * units::kPi / cycle_window_max_s; }
   double friction_to_coolant = 0.5;      // share of friction power rejected to the coolant
   // Calibration of the cylinder model for this assembly (applied on top of cylinder/*):
   double woschni_multiplier = 0.0;       // > 0 overrides cylinder/heat_transfer/multiplier

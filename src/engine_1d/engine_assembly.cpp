@@ -139,6 +139,7 @@ void EngineAssembly::build(const Initial& in) {
     p->setUniform(p.get() == down_pipe_ ? in.p_amb * 1.08 : in.p3,
                   p.get() == down_pipe_ ? in.T3 - 100.0 : in.T3);
   window_.reset();
+  window_.setMaxSpan(E.cycle_window_max_s);
 }
 
 void EngineAssembly::setFuelPerCycle(double m) {
@@ -185,9 +186,11 @@ double EngineAssembly::exhaustBurnedFraction() const {
 }
 
 void EngineAssembly::advance(double interval, double omega) {
+  interval_ = Interval{};
   if (!(interval > 0.0)) return;
-  if (!(omega > 0.0) || !std::isfinite(omega))
-    throw ModelDivergence("engine_1d", "crank speed", "must be finite and > 0");
+  if (!(omega >= 0.0) || !std::isfinite(omega))
+    throw ModelDivergence("engine_1d", "crank speed", "must be finite and >= 0");
+  interval_.duration_s = interval;
   fric_torque_ = 0.0;
   for (const auto& s : cyl_) fric_torque_ += s.cyl->frictionTorque_Nm(omega);
   double remaining = interval;
@@ -212,22 +215,39 @@ void EngineAssembly::advance(double interval, double omega) {
   }
 }
 
+double EngineAssembly::gasTorque_Nm() const {
+  double T = 0.0;
+  for (const CylinderSlot& s : cyl_) {
+    const cylinder::Cylinder& c = *s.cyl;
+    T += c.pressure_Pa() * c.crank().dVdtheta(units::degToRad(c.crankAngle_deg()));
+  }
+  return T;
+}
+
 double EngineAssembly::stableDt(double omega, std::string* limiter) const {
-  const double dt_ang = units::degToRad(P_.engine.coupling_max_deg) / omega;
-  if (!limiter) return std::min({intake_.stableDt(), exhaust_.stableDt(), dt_ang, cylinderDt()});
+  // the crank-angle cap: none at rest (omega = 0)
+  const double dt_ang = omega > 0.0 ? units::degToRad(P_.engine.coupling_max_deg) / omega
+                                    : std::numeric_limits<double>::infinity();
+  if (!limiter) return std::min({intake_.stableDt(), exhaust_.stableDt(), dt_ang, cylinderDt(omega)});
   std::string a, b;
-  const double di = intake_.stableDt(&a), de = exhaust_.stableDt(&b), dc = cylinderDt();
+  const double di = intake_.stableDt(&a), de = exhaust_.stableDt(&b), dc = cylinderDt(omega);
   const double dt = std::min({di, de, dt_ang, dc});
   *limiter = dt == di ? a : dt == de ? b : dt == dt_ang ? "crank-angle cap" : "cylinder valves";
   return dt;
 }
 
-double EngineAssembly::cylinderDt() const {
+double EngineAssembly::cylinderDt(double omega) const {
   // Each cylinder is seen by its valves as a reservoir frozen over the coupled step (explicit
   // coupling): like a gasdyn volume, its filling/emptying mode dp/dt ~ -(c^2/V) sum A_eff/c p
   // is stable for dt <= V/(c sum A_eff). A_eff: the larger of the two directions' effective
   // valve areas; c from the exhaust gas constants (gamma 1.33: c within ~3 % of the mixture's).
-  const double cfl = P_.engine.coupling_cylinder_cfl;
+  // A slow crank (a cycle longer than cycle_window_max_s: spin-down, cranking, at rest) holds a
+  // valve open for many steps at a nearly balanced pressure: there the cylinder / 1-cell
+  // runner pair has an odd-even mode at cfl 1 that a passing valve event never lets grow but
+  // that grows at rest (measured: the crank standing at 349 deg with the exhaust valve open,
+  // T_cyl 380 -> 7000 K within 1.5 s); the slow-crank limit coupling_cylinder_cfl_slow damps it.
+  const double cfl = omega < P_.engine.slowCrank_rad_s() ? P_.engine.coupling_cylinder_cfl_slow
+                                                         : P_.engine.coupling_cylinder_cfl;
   if (!(cfl > 0.0)) return std::numeric_limits<double>::infinity();
   const PerfectGas& g = exhaust_.gas();
   double dt = std::numeric_limits<double>::infinity();
@@ -396,6 +416,8 @@ void EngineAssembly::accumulateTotals(const StepSums& sums, double dt, double om
   totals_.fuel_energy_J += sums.fuel_kg * lhv;
   totals_.indicated_work_J += sums.work_J;
   totals_.friction_work_J += fric_torque_ * omega * dt;
+  interval_.indicated_J += sums.work_J;
+  interval_.friction_J += fric_torque_ * omega * dt;
   totals_.wall_heat_J += sums.wall_J;
   totals_.nox_kg += sums.nox_kg;
 }
@@ -403,7 +425,7 @@ void EngineAssembly::accumulateTotals(const StepSums& sums, double dt, double om
 // The step's channels into the cycle window.
 void EngineAssembly::recordStep(const StepSums& sums, double dt, double omega,
                                 std::array<double, kNumChannels>& x) {
-  x[kIndTorque] = sums.work_J / (omega * dt);
+  x[kIndTorque] = omega > 0.0 ? sums.work_J / (omega * dt) : gasTorque_Nm();
   x[kFricTorque] = fric_torque_;
   x[kAir] = comp_->massFlow();
   x[kExhOut] = -back_end_->massFlowIn();

@@ -34,6 +34,12 @@
 // done in the cylinder's thermodynamics (EnergyTotals).
 // Indicated torque from the exact work increments of the cylinders (trapezoidal p dV):
 //   T_ind = sum_k dW_k/(omega dt);  friction T_f = sum_k FMEP_k V_d/(4 pi) (Chen-Flynn).
+// Any crank speed omega >= 0 (the engine stopped, spinning down or cranked): the CFL steps of
+// the networks do not depend on omega, the crank-angle cap (coupling_max_deg/omega) is then
+// infinite; at omega = 0 the crank angle stands, the valves keep their areas, the gas relaxes
+// in time and T_ind is the instantaneous gas torque sum_k p_k dV_k/dtheta (the limit of
+// dW/(omega dt)). Per advance() the work of the interval (lastInterval()): the crank's energy
+// exchange with the engine, W_ind - W_f = integral (T_ind - T_f) omega dt.
 #pragma once
 #include "common/units.hpp"
 #include <array>
@@ -89,8 +95,15 @@ class EngineAssembly {
   EngineAssembly(const EngineAssembly&) = delete;
   EngineAssembly& operator=(const EngineAssembly&) = delete;
 
-  /// Advances by `interval` [s] at crank speed omega [rad/s] (many coupled steps).
+  /// Advances by `interval` [s] at crank speed omega >= 0 [rad/s] (many coupled steps).
   void advance(double interval, double omega);
+  /// Work of the last advance(): indicated (p dV) and friction [J], its duration [s].
+  struct Interval {
+    double indicated_J = 0.0, friction_J = 0.0, duration_s = 0.0;
+  };
+  const Interval& lastInterval() const { return interval_; }
+  /// Instantaneous indicated (gas) torque sum_k p_k dV_k/dtheta at the present crank angle [Nm].
+  double gasTorque_Nm() const;
   /// Largest coupled step [s] at omega [rad/s] from the current state; `limiter` (if given,
   /// allocates): the limiting pipe/volume/boundary, "crank-angle cap" or "cylinder valves".
   double stableDt(double omega, std::string* limiter = nullptr) const;
@@ -133,7 +146,7 @@ class EngineAssembly {
 
  private:
   void build(const Initial& init);
-  double cylinderDt() const;  // explicit cylinder/valve coupling limit [s] (inf: off)
+  double cylinderDt(double omega) const;  // explicit cylinder/valve coupling limit [s] (inf: off)
   gasdyn::Pipe& pipe(gasdyn::Network& n, const std::string& name, const PipeSpec& s,
                      double friction, bool hot);
 
@@ -184,6 +197,7 @@ class EngineAssembly {
   std::array<std::shared_ptr<TurbineFlowMap>, 2> turb_map_;
   CycleWindow<kNumChannels> window_;
   EnergyTotals totals_;
+  Interval interval_;
   double fric_torque_ = 0.0, t_ = 0.0, T_amb_ = 298.15, cp_in_ = 1004.5, cp_ex_ = 1160.0;
   double xb_bank_[2] = {0.3, 0.3};
   double substep_deg_ = 2.0;       // cylinder sub-step, valves closed (IVC..EVO) [deg crank]

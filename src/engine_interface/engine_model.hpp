@@ -27,6 +27,10 @@
 //             back_pressure_Pa <= 0 (no aftertreatment node): the model's own exhaust system
 //             (map: the bench back-pressure of its map; 1D: its orifice law). Both are echoed in
 //             the outputs as used (0 = none).
+//   engine off  fuel_enabled false (hybrid stop-start: stopped, spinning down, cranked; any
+//             ω >= 0): brake_torque_Nm is what the engine puts on the crank, map: its motoring
+//             curve (faded to 0 at 0 rpm), 1D: its crank torque of the step (compression pulses,
+//             signed); the vehicle applies a braking one as friction, a driving one as it is.
 //   exhaust T EngineOutputs::exhaust_T_K is always > 0: where the model has no exhaust flow state
 //             yet (before its first step) the ambient temperature of the last inputs.
 #pragma once

@@ -24,7 +24,9 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
   const int g = gear_state_.gear;
   // Gear load loss at the input speed referred to the engaged (or on-coming) gear.
   const double w_in = gear_state_.mode == DriveMode::Shifting ? v * k_[g] : gearboxInputSpeed(v, w);
-  r.T_eng = c.engine_on ? c.T_e : -std::fabs(c.T_e) * smoothSign(w);  // stopped: friction only
+  // stopped: a braking engine torque acts as friction (never turns the crank backwards); a
+  // driving one (the gas of an expanding cylinder of the crank-resolved 1D engine) as it is
+  r.T_eng = c.engine_on || c.T_e > 0.0 ? c.T_e : -std::fabs(c.T_e) * smoothSign(w);
   r.T_em = c.T_em;
   const double wa = std::max(std::fabs(w), w_half);
   r.T_aux = c.P_aux * w / (wa * wa);

@@ -75,7 +75,8 @@ struct VehicleInputs {
   bool brake_override = false;        // hybrid: the EMS sets the friction brake of this step
   double friction_brake_force_N = 0.0;  // ... to this force at the tyres [N] (regen took the rest)
   bool engine_on = true;              // false: engine stopped/being cranked (hybrid stop-start):
-                                      // no idle governor, its torque is friction opposing ω_e,
+                                      // no idle governor, its torque T_e <= 0 is friction
+                                      // opposing ω_e (T_e > 0, gas expanding: drives the crank),
                                       // the gearbox stays in neutral until it runs again
   bool has_fan_power = false;         // true when the cooling node provides fan_power_W
   double fan_power_W = 0.0;           // fan shaft power [W] (may be < 0: windmilling)
@@ -166,7 +167,7 @@ class VehicleModel {
  private:
   struct StepConst {  // held over one macro step
     double T_e, T_em, P_aux, F_brake, grade, rho;
-    bool engine_on = true;  // false: T_e acts as friction -|T_e| sgn(ω_e)
+    bool engine_on = true;  // false: T_e <= 0 acts as friction -|T_e| sgn(ω_e), T_e > 0 as is
   };
   struct Rates {
     double T_eng = 0, T_em = 0, T_aux = 0, T_drag = 0, T_pump = 0, T_turb = 0, T_gload = 0;

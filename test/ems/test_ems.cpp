@@ -318,8 +318,10 @@ TEST(StopStart, FailedStartStopsTheRunAndSocRestart) {
     EXPECT_EQ(m.step(0.01, in).reason, Reason::SocRestart);
     EXPECT_THROW(for (int k = 0; k < 1000; ++k) m.step(0.01, in), ModelDivergence);  // never fires
   }
-  {  // stop-start unsupported (1D engine): stays on, says why
-    EmsModel m(p, fuel, false);
+  {  // stop-start switched off in the config: stays on, says why
+    EmsParams off = p;
+    off.stop_start.enabled = false;
+    EmsModel m(off, fuel);
     EmsInputs in = warmTraction(40.0, 62.8);
     in.stopped = true;
     EXPECT_TRUE(m.step(0.01, in).engine_on);

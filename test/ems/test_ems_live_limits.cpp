@@ -76,7 +76,7 @@ LoopResult closedLoop(bool with_limit_model, double w0, double w1, double T_s, b
   machine.reset(units::celsiusToK(25.0));
   const emachine::EMachineModel limits_of(machineParams(), "config/emachine.yaml");
   Machine lim(limits_of);
-  EmsModel ems(p, fuel, true, with_limit_model ? &lim : nullptr);
+  EmsModel ems(p, fuel, with_limit_model ? &lim : nullptr);
   double V = ocv;  // terminal voltage of the last step
   LoopResult r;
   const int n = static_cast<int>(std::lround(T_s / dt));

@@ -1,6 +1,6 @@
 // Vehicle inputs of the hybrid (P1 e-machine on the crank, EMS brake blending, stop-start)
-// against independent references: the crank's spin-down and cranking in neutral vs the
-// analytic constant-torque solution, the friction brake set by the EMS, the stop-start debt of
+// against independent references: the crank's spin-down and cranking in neutral (and the gas
+// torque of a stopped 1D engine driving it) vs the analytic constant-torque solution, the friction brake set by the EMS, the stop-start debt of
 // the crank-driven consumers repaid exactly, and the driveline energy balance with an e-machine.
 #include <gtest/gtest.h>
 
@@ -76,6 +76,25 @@ TEST(VehicleHybrid, CrankingByTheEmachineFollowsTheConstantTorqueSolution) {
   const auto& e = vm.outputs().energy;
   EXPECT_GT(e.em_J, 0.0);
   EXPECT_LT(std::fabs(e.residual_J()), 1e-9 * e.em_J);
+}
+
+TEST(VehicleHybrid, StoppedEngineGasTorqueDrivesTheCrankFromRest) {
+  // Engine off with a driving torque T_e > 0 (the gas of an expanding cylinder of the 1D engine
+  // at rest): it acts as it is, J dω/dt = T_e from ω = 0 (no friction ramp), ω(t) = T_e t / J.
+  const VehicleParams p = freeCrank();
+  VehicleModel vm(p);
+  vm.reset(0.0, 0, 0.0);
+  const double J = [&] { VehicleModel v2(p); v2.reset(0.0, 0, 1.0); return 2.0 * v2.kineticEnergy(); }();
+  VehicleInputs in;
+  in.engine_on = false;
+  in.engine_torque_Nm = 40.0;
+  in.driver_enabled = false;
+  in.brake_pedal_cmd = 1.0;
+  for (int k = 1; k <= 20; ++k) vm.step(0.01, in);
+  EXPECT_NEAR(vm.outputs().engine_speed_rad_s, 40.0 * 0.2 / J, 1e-9 * 40.0 * 0.2 / J);
+  const auto& e = vm.outputs().energy;
+  EXPECT_NEAR(e.engine_J, 0.5 * J * std::pow(40.0 * 0.2 / J, 2), 1e-6 * e.engine_J);
+  EXPECT_LT(std::fabs(e.residual_J()), 1e-9 * e.engine_J);
 }
 
 TEST(VehicleHybrid, EmsBrakeOverridesTheDriversFrictionBrake) {

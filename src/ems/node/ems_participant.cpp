@@ -26,11 +26,10 @@ void EmsParticipant::configure() {
   mp.declare(mps);
   applyParamFile(mps, engine_file);
   fuel_ = std::make_unique<MapFuelModel>(std::make_unique<engine_map::MapEngine>(mp, pkg));
-  // stop-start needs an engine that can be stopped and cranked: the map engine (with the 1D
-  // engine the EMS keeps it running and publishes the reason StopStartDisabled)
-  const bool supported = cosim::scenarioEngineModel(nh_) == "map";
+  // stop-start with either engine: both stop by fuel cut and are cranked by the e-machine
+  // through the vehicle's crank dynamics (ems/README.md "Decision per step")
   em_limits_ = std::make_unique<MachineLimitModel>(emachineModel());
-  model_ = std::make_unique<EmsModel>(p, *fuel_, supported, em_limits_.get());
+  model_ = std::make_unique<EmsModel>(p, *fuel_, em_limits_.get());
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
   ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);
 

@@ -11,8 +11,8 @@
 // Outputs (stamped t_k + P): /ems/command (EmsCommand: split, mode and reason, for the e-machine,
 //         the vehicle and the bag), /ems/engine_command (EngineCommand for the engine node).
 // Parameters: private namespace = config/ems.yaml; the map engine and the e-machine YAML of the
-//         scenario's config folder (cosim::scenarioConfigFile), the controller's models of both; /scenario/engine_model (stop-start with the map
-//         engine only: the 1D engine cannot be stopped and cranked).
+//         scenario's config folder (cosim::scenarioConfigFile), the controller's models of both.
+//         Stop-start runs with either engine model.
 // Diagnostics (docs/diagnostics.md): no warnings of its own (the limits it meets are the
 // e-machine's and the battery's); key/values mode, reason, equivalence factor, stops/starts.
 #pragma once
