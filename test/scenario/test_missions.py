@@ -7,7 +7,10 @@ distance the cycle file gives; every balance of the summary closed (closure < 1e
 above 0 degC, and at 0 degC only the stored ones (the SCR falls below light-off in the slow
 urban stretch at 0 degC, with or without stop-start). The hybrid also: the engine stopped and
 was restarted by the e-machine, SOC stayed inside the battery's window, and its SOC-corrected
-fuel is below the baseline's at the same ambient. Finally each summary equals the stored one
+fuel is below the baseline's at the same ambient. The hvac (on by default): fuel_kg = engine +
+fuel-fired heater, the heater's fuel x LHV x efficiency = its heat into the coolant, the heater
+burns at 0 degC and not at 40 degC, the A/C cools at 40 degC and not at 0 degC, the cabin's
+temperature finite and within its bounds (its balance closes with the others). Finally each summary equals the stored one
 (test/scenario/reference/missions) within mission_reference.REL_TOL."""
 import os
 import shutil
@@ -17,6 +20,7 @@ import unittest
 import yaml
 
 from twin_tools import references as mr
+from twin_tools.units import DIESEL_LHV_J_KG
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -112,6 +116,30 @@ class Missions(unittest.TestCase):
         for ambient in mr.SUITE_AMBIENTS_C:
             base, hyb = by[("baseline_urban", ambient)], by[("hybrid_urban", ambient)]
             self.assertLess(hyb["fuel_soc_corrected_kg"], base["fuel_kg"], ambient)
+
+    def test_hvac_heats_in_the_cold_and_cools_in_the_heat(self):
+        hv = config("hvac.yaml")
+        eta = hv["aux_heater"]["efficiency"]
+        set_h = hv["controller"]["heating_setpoint_K"] - 273.15
+        set_c = hv["controller"]["cooling_setpoint_K"] - 273.15
+        for n, _, ambient, s in self.each():
+            self.assertAlmostEqual(s["fuel_kg"], s["engine_fuel_kg"] + s["heater_fuel_kg"], delta=1e-12, msg=n)
+            self.assertAlmostEqual(s["heater_fuel_kg"] * DIESEL_LHV_J_KG * eta / 3.6e6, s["heater_kwh"],
+                                   delta=1e-9 * max(1.0, s["heater_kwh"]), msg=n)
+            self.assertAlmostEqual(sum(s["fuel_by_state_kg"].values()), s["fuel_kg"], delta=1e-12, msg=n)
+            for k in ("initial", "final", "mean", "min", "max"):
+                T = s["cabin_temperature_c_" + k]
+                self.assertTrue(min(ambient, set_h) - 1.0 <= T <= max(ambient, set_c) + 1.0, (n, k, T))
+            self.assertGreater(s["hvac_kwh"], 0.0, n)
+            self.assertGreater(s["energy_kwh"]["aux_hvac"], 0.0, n)
+            if ambient <= 0:
+                self.assertGreater(s["heater_fuel_kg"], 0.0, n)
+                self.assertEqual(s["ac_cooling_kwh"], 0.0, n)
+                self.assertGreater(s["cabin_temperature_c_final"], set_h - 3.0, n)  # held (a stop: doors open)
+            else:
+                self.assertEqual(s["heater_fuel_kg"], 0.0, n)
+                self.assertGreater(s["ac_cooling_kwh"], 0.0, n)
+                self.assertLess(s["cabin_temperature_c_final"], set_c + 3.0, n)  # (hybrid: engine off at a stop)
 
     def test_summaries_equal_the_stored_ones(self):
         for n, scenario, ambient, s in self.each():
