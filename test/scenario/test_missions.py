@@ -5,7 +5,8 @@ SUITE_MISSIONS; 25 degC too with `scripts/twin references`), two at a time. Each
 mission invariants against what is independent of the run: the run ended "end of mission" at the cycle's last second; 121/121 stops served; the
 distance the cycle file gives; every balance of the summary closed (closure < 1e-9); no warning
 above 0 degC, and at 0 degC only the stored ones (the SCR falls below light-off in the slow
-urban stretch at 0 degC, with or without stop-start). The hybrid also: the engine stopped and
+urban stretch at 0 degC, with or without stop-start; the hybrid's battery limits its request
+for moments while its cells are cold). The hybrid also: the engine stopped and
 was restarted by the e-machine, SOC stayed inside the battery's window, and its SOC-corrected
 fuel is below the baseline's at the same ambient. The hvac (on by default): fuel_kg = engine +
 fuel-fired heater, the heater's fuel x LHV x efficiency = its heat into the coolant, the heater
@@ -98,7 +99,13 @@ class Missions(unittest.TestCase):
                 self.assertEqual(got, [], n)
             else:
                 self.assertEqual(got, [(w["node"], w["warning"]) for w in mr.read_reference(scenario, ambient)["warnings"]], n)
-                self.assertTrue(all(w == ("aftertreatment", "ats_below_light_off") for w in got), (n, got))
+                # the cold SCR; in the hybrid also battery_limited: with the fuel-fired heater the
+                # coolant warms sooner, boost starts while the cells are at ~3 degC, and the EMS plans
+                # the e-machine against the battery's limit without the DC/DC's 24 V load (src/ems)
+                allowed = {("aftertreatment", "ats_below_light_off")}
+                if scenario == "hybrid_urban":
+                    allowed.add(("battery", "battery_limited"))
+                self.assertTrue(all(w in allowed for w in got), (n, got))
 
     def test_hybrid_stops_and_restarts_its_engine_within_its_soc_window(self):
         limits = config("battery.yaml")["limits"]  # the battery's usable SOC window
@@ -122,6 +129,7 @@ class Missions(unittest.TestCase):
         eta = hv["aux_heater"]["efficiency"]
         set_h = hv["controller"]["heating_setpoint_K"] - 273.15
         set_c = hv["controller"]["cooling_setpoint_K"] - 273.15
+        band = hv["diagnostics"]["band_K"]  # cabin_discomfort's band
         for n, _, ambient, s in self.each():
             self.assertAlmostEqual(s["fuel_kg"], s["engine_fuel_kg"] + s["heater_fuel_kg"], delta=1e-12, msg=n)
             self.assertAlmostEqual(s["heater_fuel_kg"] * DIESEL_LHV_J_KG * eta / 3.6e6, s["heater_kwh"],
@@ -135,11 +143,14 @@ class Missions(unittest.TestCase):
             if ambient <= 0:
                 self.assertGreater(s["heater_fuel_kg"], 0.0, n)
                 self.assertEqual(s["ac_cooling_kwh"], 0.0, n)
-                self.assertGreater(s["cabin_temperature_c_final"], set_h - 3.0, n)  # held (a stop: doors open)
+                # heated, within the discomfort band of the heating set point (the convectors'
+                # capacity G_h (T_coolant - T_cabin) limits it below the set point at 0 degC)
+                self.assertGreater(s["cabin_temperature_c_final"], set_h - band, n)
+                self.assertGreater(s["cabin_temperature_c_mean"], ambient + 10.0, n)
             else:
                 self.assertEqual(s["heater_fuel_kg"], 0.0, n)
                 self.assertGreater(s["ac_cooling_kwh"], 0.0, n)
-                self.assertLess(s["cabin_temperature_c_final"], set_c + 3.0, n)  # (hybrid: engine off at a stop)
+                self.assertLess(s["cabin_temperature_c_final"], set_c + band, n)  # (hybrid: engine off at a stop)
 
     def test_summaries_equal_the_stored_ones(self):
         for n, scenario, ambient, s in self.each():
