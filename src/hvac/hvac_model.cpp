@@ -70,6 +70,8 @@ void HvacModel::step(double dt_s, const HvacInputs& in) {
   if (!std::isfinite(cabin_.temperature_K()) || cabin_.temperature_K() < 200.0 || cabin_.temperature_K() > 400.0)
     throw ModelDivergence("hvac", "cabin temperature", "= " + std::to_string(cabin_.temperature_K()) +
                                                            " K outside [200, 400] K");
+  out_.engine_run_request =
+      d.cooling_W > 0.0 && cabin_.temperature_K() > p_.controller.cooling_setpoint_K + p_.controller.engine_run_above_K;
   out_.heating_demand_W = d.heating_W;
   out_.cooling_demand_W = d.cooling_W;
   out_.doors_open = ci.doors_open;

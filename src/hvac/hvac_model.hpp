@@ -7,7 +7,9 @@
 //      valve is open) and cooling [W]
 //   3. auxiliary heater: on while heating is demanded and the coolant is cold; heat into the HT
 //      coolant, fuel, electric draw
-//   4. A/C: cooling delivered while the compressor turns, shaft power = Q̇/COP, fan power
+//   4. A/C: cooling delivered while the compressor turns, shaft power = Q̇/COP, fan power; it asks
+//      the engine to run (a stop-start engine: no stop, or a restart) while cooling is demanded
+//      and the cabin is more than engine_run_above_K above the cooling set point
 //   5. cabin: C dT/dt = Q̇_coolant - Q̇_A/C + Q̇_gain - G (T - T_a), Q̇_coolant = what the
 //      convectors delivered (mean of the cooling participant's last step)
 // Cabin balance, booked exactly (cabin.hpp):
@@ -39,6 +41,7 @@ struct HvacOutputs {
   double cabin_T_K = 0.0;
   double heating_demand_W = 0.0, cooling_demand_W = 0.0;
   bool doors_open = false, aux_heater_on = false;
+  bool engine_run_request = false;    // the A/C needs the engine (cabin > T_c + engine_run_above_K)
   double aux_heater_heat_W = 0.0, aux_heater_fuel_kg_s = 0.0;
   double ac_cooling_W = 0.0, compressor_power_W = 0.0, cop = 0.0;
   double electric_power_W = 0.0;      // blowers, condenser fans, heater burner [W]

@@ -47,6 +47,8 @@ void HvacParams::declare(ParamSet& ps) {
   ps.add("cooling_setpoint_K", k.cooling_setpoint_K, "K", 283.15, 313.15, "cooling holds the cabin at this");
   ps.add("gain_W_K", k.gain_W_K, "W/K", 0.0, 1e6, "proportional gain beyond the feed-forward");
   ps.add("max_heating_W", k.max_heating_W, "W", 0.0, 2e5, "heating demand limit");
+  ps.add("engine_run_above_K", k.engine_run_above_K, "K", 0.0, 20.0,
+         "engine run request while the cabin is this far above the cooling set point");
 
   AuxHeaterParams& h = aux_heater;
   ps.setPrefix("aux_heater/");

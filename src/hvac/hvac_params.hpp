@@ -53,6 +53,9 @@ struct ControllerParams {
   double cooling_setpoint_K = units::celsiusToK(24.0);
   double gain_W_K = 3000.0;                 // proportional gain on top of the feed-forward
   double max_heating_W = 40000.0;           // convector + blower capacity
+  // The belt-driven A/C asks the engine to keep (or start) running at a standstill while the
+  // cabin is more than this above the cooling set point (hybrid stop-start) [K].
+  double engine_run_above_K = 2.0;
 };
 
 /// Fuel-fired coolant heater (Webasto Thermo 300 class).

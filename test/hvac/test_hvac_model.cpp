@@ -47,11 +47,19 @@ TEST(HvacModel, HotAmbientCoolsOnlyWithTheEngineRunning) {
   EXPECT_EQ(o.heating_demand_W, 0.0);
   EXPECT_EQ(o.aux_heater_fuel_kg, 0.0);
   EXPECT_NEAR(o.energy_residual_J, 0.0, 1e-9 * o.ac_cooling_J);
+  EXPECT_FALSE(o.engine_run_request);  // held at the set point: no need to keep the engine
   in.engine_running = false;  // stop-start: the belt-driven compressor stands
+  in.vehicle_speed_m_s = 0.0;
   const double T_before = o.cabin_T_K;
   for (int i = 0; i < 300; ++i) m.step(0.1, in);
   EXPECT_EQ(m.outputs().compressor_power_W, 0.0);
   EXPECT_GT(m.outputs().cabin_T_K, T_before);
+  // the cabin drifts above T_c + engine_run_above_K: the A/C asks the engine to run
+  while (m.outputs().cabin_T_K <= 297.15 + 2.0) {
+    EXPECT_FALSE(m.outputs().engine_run_request);
+    m.step(0.1, in);
+  }
+  EXPECT_TRUE(m.outputs().engine_run_request);
 }
 
 TEST(HvacModel, WarmStartCabinIsTheNearestSetPoint) {

@@ -6,7 +6,8 @@
 // Inputs: /vehicle/driver_demand (DriverDemand, fresh: stamped t_k + P, the demand for the next
 //         step), /emachine/state (live torque limits), /battery/state (SOC, T, power limits),
 //         /cooling/state (HT coolant) and /aftertreatment/state (SCR brick) when those
-//         participants run (else the engine and ATS count as warm).
+//         participants run (else the engine and ATS count as warm); /hvac/state
+//         (engine_run_request: the belt-driven A/C needs the engine, no stop) when the hvac runs.
 // Outputs (stamped t_k + P): /ems/command (EmsCommand: split, mode and reason, for the e-machine,
 //         the vehicle and the bag), /ems/engine_command (EngineCommand for the engine node).
 // Parameters: private namespace = config/ems.yaml; the map engine YAML of the scenario's config
@@ -16,6 +17,7 @@
 // e-machine's and the battery's); key/values mode, reason, equivalence factor, stops/starts.
 #pragma once
 #include "common/units.hpp"
+#include <hybrid_bus_twin/HvacState.h>
 #include <hybrid_bus_twin/AftertreatmentState.h>
 #include <hybrid_bus_twin/BatteryState.h>
 #include <hybrid_bus_twin/CoolingState.h>
@@ -58,6 +60,7 @@ class EmsParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::BatteryState>* battery_ = nullptr;
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;
   cosim::Input<hybrid_bus_twin::AftertreatmentState>* ats_ = nullptr;
+  cosim::Input<hybrid_bus_twin::HvacState>* hvac_ = nullptr;  // the hvac runs (hvac:=on) only
   cosim::Output command_pub_, engine_pub_;
   hybrid_bus_twin::DriverDemand last_demand_;
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = units::kStandardAtmosphere_Pa;

@@ -73,6 +73,7 @@ void HvacParticipant::publishOutputs(const ros::Time& t) {
   s->cooling_demand_w = o.cooling_demand_W;
   s->doors_open = o.doors_open;
   s->aux_heater_on = o.aux_heater_on;
+  s->engine_run_request = o.engine_run_request;
   s->aux_heater_heat_w = o.aux_heater_heat_W;
   s->aux_heater_fuel_rate_kg_s = o.aux_heater_fuel_kg_s;
   s->ac_cooling_w = o.ac_cooling_W;
