@@ -109,11 +109,13 @@ class Missions(unittest.TestCase):
 
     def test_hybrid_stops_and_restarts_its_engine_within_its_soc_window(self):
         limits = config("battery.yaml")["limits"]  # the battery's usable SOC window
-        for n, scenario, _, s in self.each():
+        for n, scenario, ambient, s in self.each():
             if scenario != "hybrid_urban":
                 continue
             self.assertGreater(s["engine_starts"], 10, n)  # restarted by the e-machine
-            self.assertGreater(s["engine_off_s"], 300.0, n)
+            # at 40 degC the belt-driven A/C's engine run request keeps the engine running at
+            # most stops (src/ems: ClimateRequest)
+            self.assertGreater(s["engine_off_s"], 100.0 if ambient >= 40 else 300.0, n)
             self.assertGreater(s["cranking_s"], 0.0, n)
             self.assertGreaterEqual(s["soc_min"], limits["soc_min"], n)
             self.assertLessEqual(s["soc_max"], limits["soc_max"], n)
@@ -139,7 +141,8 @@ class Missions(unittest.TestCase):
                 T = s["cabin_temperature_c_" + k]
                 self.assertTrue(min(ambient, set_h) - 1.0 <= T <= max(ambient, set_c) + 1.0, (n, k, T))
             self.assertGreater(s["hvac_kwh"], 0.0, n)
-            self.assertGreater(s["energy_kwh"]["aux_hvac"], 0.0, n)
+            if s["architecture"] == "conventional":  # the hybrid's 24 V load goes to the DC/DC
+                self.assertGreater(s["energy_kwh"]["aux_hvac"], 0.0, n)
             if ambient <= 0:
                 self.assertGreater(s["heater_fuel_kg"], 0.0, n)
                 self.assertEqual(s["ac_cooling_kwh"], 0.0, n)
