@@ -106,6 +106,9 @@ void CoolingModel::checkFinite(const CoolingInputs& in) const {
   chk(in.ambient_p_Pa, "ambient_p_Pa");
   chk(in.lt_heat_W, "lt_heat_W");
   chk(in.fan_demand, "fan_demand");
+  chk(in.cabin_heat_demand_W, "cabin_heat_demand_W");
+  chk(in.cabin_T_K, "cabin_T_K");
+  chk(in.aux_heater_heat_W, "aux_heater_heat_W");
   if (!(in.ambient_T_K > 200.0 && in.ambient_T_K < 350.0))
     throw InputError(where, "ambient_T_K", "outside [200, 350] K");
   if (!(in.ambient_p_Pa > 2e4 && in.ambient_p_Pa < 2e5))
@@ -132,7 +135,7 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
   s.G_lt = rad_lt_.conductance_W_K(s.m_air, s.m_lt);
   s.G_ht = rad_ht_.conductance_W_K(s.m_air, s.m_rad);
   s.pre = s.C_air > 0.0 ? s.G_lt / s.C_air : 0.0;  // T_air,HT,in - T_a = pre θ_l
-  heaterLoad(s);
+  heaterLoad(in, s);
   const double T_c_old = T_c_;
   solveTemperatures(in, s);
   updateLags(in, s);
@@ -176,11 +179,22 @@ void CoolingModel::ltPump(SubstepState& s) const {
 }
 
 // Cabin heater: the valve (with its lockout hysteresis) and the heat it takes, either the
-// cabin's demand (constant) or, when the coolant cannot deliver it, a conductance.
-void CoolingModel::heaterLoad(SubstepState& s) {
+// cabin's demand (constant) or, when the coolant cannot deliver it, a conductance: to the
+// ambient (heater/ balance point) or to the cabin (the hvac participant's demand).
+void CoolingModel::heaterLoad(const CoolingInputs& in, SubstepState& s) {
   const auto& hp = p_.heater;
   if (T_c_ >= hp.min_coolant_K) heater_valve_open_ = true;
   if (T_c_ < hp.min_coolant_K - hp.lockout_hysteresis_K) heater_valve_open_ = false;
+  if (in.cabin_from_hvac) {
+    if (!heater_valve_open_ || !(in.cabin_heat_demand_W > 0.0) || !(T_c_ > in.cabin_T_K)) return;
+    if (hp.conductance_W_K * (T_c_ - in.cabin_T_K) >= in.cabin_heat_demand_W) {
+      s.q_h_const = in.cabin_heat_demand_W;
+    } else {  // Q = G_h (T_c,new - T_cab) = G_h θ_c - G_h (T_cab - T_a)
+      s.g_h = hp.conductance_W_K;
+      s.q_h_const = -hp.conductance_W_K * (in.cabin_T_K - s.Ta);
+    }
+    return;
+  }
   if (s.Ta < hp.balance_temperature_K && heater_valve_open_) {
     const double demand = hp.cabin_UA_W_K * (hp.balance_temperature_K - s.Ta);
     if (hp.conductance_W_K * (T_c_ - s.Ta) >= demand) s.q_h_const = demand;
@@ -202,7 +216,7 @@ void CoolingModel::solveTemperatures(const CoolingInputs& in, SubstepState& s) {
   A(1, 2) = -s.G_ht * s.pre;
   A(2, 2) = C_l_ / h + s.G_lt;
   b(0) = C_m_ / h * (T_m_ - Ta) + in.engine_heat_W;
-  b(1) = C_c_ / h * (T_c_ - Ta) - s.q_h_const;
+  b(1) = C_c_ / h * (T_c_ - Ta) - s.q_h_const + in.aux_heater_heat_W;
   b(2) = C_l_ / h * (T_l_ - Ta) + in.lt_heat_W;
   s.th = A.partialPivLu().solve(b);
 
@@ -267,6 +281,7 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.radiator_ht_heat_W = s.Q_ht;
   o.radiator_lt_heat_W = s.Q_lt;
   o.heater_heat_W = s.Q_h;
+  o.aux_heater_heat_W = in.aux_heater_heat_W;
   o.surface_loss_W = s.Q_s;
   o.air_volume_flow_m3_s = s.air.flow_m3_s;
   o.air_mass_flow_kg_s = s.m_air;
@@ -279,12 +294,13 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.lt_pump_energy_J += s.lt_in_W * h;
   o.engine_heat_J += in.engine_heat_W * h;
   o.lt_heat_J += in.lt_heat_W * h;
+  o.aux_heater_J += in.aux_heater_heat_W * h;
   o.radiator_ht_J += s.Q_ht * h;
   o.radiator_lt_J += s.Q_lt * h;
   o.heater_J += s.Q_h * h;
   o.surface_loss_J += s.Q_s * h;
   o.stored_change_J = C_m_ * (T_m_ - T_m0_) + C_c_ * (T_c_ - T_c0_) + C_l_ * (T_l_ - T_l0_);
-  o.energy_residual_J = o.engine_heat_J + o.lt_heat_J - o.radiator_ht_J - o.radiator_lt_J - o.heater_J -
+  o.energy_residual_J = o.engine_heat_J + o.lt_heat_J + o.aux_heater_J - o.radiator_ht_J - o.radiator_lt_J - o.heater_J -
                         o.surface_loss_J - o.stored_change_J;
 }
 

@@ -9,14 +9,17 @@
 //
 // Thermal network (Q̇ in W, C in J/K, G in W/K, T_a ambient):
 //   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_s (T_m - T_a)
-//   C_c dT_c/dt = G_mc (T_m - T_c) - Q̇_rad,HT - Q̇_heater
+//   C_c dT_c/dt = G_mc (T_m - T_c) - Q̇_rad,HT - Q̇_heater + Q̇_aux   (Q̇_aux: fuel-fired heater, hvac)
 //   C_l dT_l/dt = Q̇_LT,in - Q̇_rad,LT
 //   C_m = m_metal c_metal + m_oil c_oil,  C_c = ρ V c (HT coolant),  C_l = ρ V_lt c + C_components
 //   Q̇_rad,LT = G_LT (T_l - T_a),                       G = ε C_min of the radiator (radiator.hpp)
 //   T_air,HT,in = T_a + Q̇_rad,LT/(ṁ_air c_p,air)        (LT radiator pre-heats the HT radiator air)
 //   Q̇_rad,HT = G_HT (T_c - T_air,HT,in)
 //   Q̇_heater = 0 if T_a >= T_bal or the valve is shut, else min(UA_cab (T_bal - T_a), G_h (T_c - T_a));
-//   valve opens when T_c >= T_heat,min and shuts when T_c < T_heat,min - hysteresis
+//   valve opens when T_c >= T_heat,min and shuts when T_c < T_heat,min - hysteresis.
+//   With the hvac participant (in.cabin_from_hvac): its demand Q̇_d and cabin temperature T_cab
+//   replace the balance point: Q̇_heater = min(Q̇_d, G_h (T_c - T_cab)) (0 if T_c <= T_cab),
+//   valve as above
 // Coolant flows: V̇_pump = V̇_r ω_p/ω_r; radiator share y_eff = leak + (1 - leak) y, the rest
 // bypasses; ṁ_rad = ρ y_eff V̇_pump. LT: ṁ_lt = ρ V̇_lt,r ω_lt/ω_lt,max.
 // Thermostat: wax lag dT_w/dt = (T_c - T_w)/τ_w; play operator of half-width h = hysteresis/2,
@@ -62,6 +65,13 @@ struct CoolingInputs {
   double ambient_p_Pa = units::kStandardAtmosphere_Pa;      // [Pa]
   double lt_heat_W = 0.0;              // e-machine + power electronics losses [W] (0 baseline)
   double fan_demand = 0.0;             // [-] extra fan request 0..1 (HVAC)
+  // Cabin heating by the hvac participant (hvac:=on): its demand and cabin temperature replace
+  // the balance-point demand of heater/ (cabin_from_hvac), and its fuel-fired heater's heat
+  // enters the HT coolant.
+  bool cabin_from_hvac = false;
+  double cabin_heat_demand_W = 0.0;    // heat the cabin asks of the convectors [W]
+  double cabin_T_K = 293.15;           // cabin temperature [K] (convector driving difference)
+  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the HT coolant [W]
 };
 
 struct CoolingOutputs {
@@ -76,13 +86,14 @@ struct CoolingOutputs {
   double lt_pump_power_W = 0.0;        // LT pump clutch input power (shaft + slip) [W]
   double lt_pump_hydraulic_power_W = 0.0;
   double radiator_ht_heat_W = 0.0, radiator_lt_heat_W = 0.0, heater_heat_W = 0.0;
+  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the HT coolant [W]
   double surface_loss_W = 0.0;
   double air_volume_flow_m3_s = 0.0, air_mass_flow_kg_s = 0.0;
   double coolant_flow_m3_s = 0.0, radiator_coolant_flow_m3_s = 0.0;
   double ht_air_in_T_K = 0.0;          // HT radiator air inlet (after the LT radiator) [K]
   // Cumulative since reset [J].
   double fan_energy_J = 0.0, fan_drive_energy_J = 0.0, pump_energy_J = 0.0, lt_pump_energy_J = 0.0;
-  double engine_heat_J = 0.0, lt_heat_J = 0.0;
+  double engine_heat_J = 0.0, lt_heat_J = 0.0, aux_heater_J = 0.0;
   double radiator_ht_J = 0.0, radiator_lt_J = 0.0, heater_J = 0.0, surface_loss_J = 0.0;
   double stored_change_J = 0.0;        // Σ C (T - T_0)
   double energy_residual_J = 0.0;      // in - out - stored change (ideally 0)
@@ -142,7 +153,7 @@ class CoolingModel {
   void htPumpAndThermostat(SubstepState& s) const;
   void fanAndAirFlow(const CoolingInputs& in, double rho_air, SubstepState& s) const;
   void ltPump(SubstepState& s) const;
-  void heaterLoad(SubstepState& s);
+  void heaterLoad(const CoolingInputs& in, SubstepState& s);
   void solveTemperatures(const CoolingInputs& in, SubstepState& s);
   void updateLags(const CoolingInputs& in, const SubstepState& s);
   void recordOutputs(const CoolingInputs& in, const SubstepState& s, double T_c_old);

@@ -91,6 +91,8 @@ const EmsDecision& EmsModel::decide(double dt, const EmsInputs& in) {
       standing = Reason::SocLow;
     } else if (in.discharge_limit_W < ss.min_discharge_power_W) {
       standing = Reason::BatteryLimit;
+    } else if (in.climate_run_request) {
+      standing = Reason::ClimateRequest;
     } else if (warm && in.soc >= ss.soc_min_to_stop && in.discharge_limit_W >= ss.min_discharge_power_W &&
                on_time_s_ >= ss.min_on_time_s) {
       state_ = State::Stopped;
@@ -102,6 +104,7 @@ const EmsDecision& EmsModel::decide(double dt, const EmsInputs& in) {
     if (in.start_request || !in.stopped) why = Reason::DriveOff;
     else if (in.soc < ss.soc_restart) why = Reason::SocRestart;
     else if (!engine_warm) why = Reason::CooledRestart;
+    else if (in.climate_run_request) why = Reason::ClimateRequest;
     if (why != Reason::StandstillStop) {
       state_ = State::Cranking;
       crank_time_s_ = 0.0;

@@ -84,6 +84,7 @@ enum class Reason : uint8_t {
   NotConnected = 12,      // converter open / neutral / shifting / low speed: no regen
   StopStartDisabled = 13, // standing but stop-start is off (config stop_start/enabled)
   Overrun = 14,           // no traction demand: engine motoring, EM idle
+  ClimateRequest = 15,    // standing, no stop / restart: the HVAC's belt-driven A/C needs the engine
 };
 
 struct EmsInputs {
@@ -106,6 +107,8 @@ struct EmsInputs {
   double soc = 0.5, battery_T_K = 298.15, discharge_limit_W = 0.0, charge_limit_W = 0.0;
   // warm-up state (cooling, aftertreatment); without the thermal nodes: warm
   double coolant_T_K = 363.15, scr_T_K = 573.15;
+  // from the hvac (hvac:=on): its A/C compressor is on the belt and the cabin is too warm
+  bool climate_run_request = false;
 };
 
 struct EmsDecision {

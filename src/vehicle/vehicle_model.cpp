@@ -78,7 +78,12 @@ void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
 double VehicleModel::auxPower(const VehicleInputs& in) const {
   const auto& a = p_.aux;
   return a.steering_pump_W + a.air_compressor_W + a.alternator_W + aux_payback_W_ +
-         (in.has_fan_power ? in.fan_power_W : a.fan_default_W);
+         (in.has_fan_power ? in.fan_power_W : a.fan_default_W) + hvacCrankPower(in);
+}
+
+double VehicleModel::hvacCrankPower(const VehicleInputs& in) const {
+  const auto& a = p_.aux;
+  return in.hvac_compressor_W + (a.electricViaDcdc() ? 0.0 : in.hvac_electric_W / a.alternator_efficiency);
 }
 
 void VehicleModel::bookAuxConsumers(double dE_aux_J, double P_aux_W, const VehicleInputs& in) {
@@ -93,13 +98,15 @@ void VehicleModel::bookAuxConsumers(double dE_aux_J, double P_aux_W, const Vehic
   e.pneumatic_J += per_W * a.air_compressor_W * f;
   if (aux_payback_W_ > 0.0) e.aux_deferred_J = std::max(0.0, e.aux_deferred_J - per_W * aux_payback_W_);
   e.electric_J += per_W * a.alternator_W;
+  e.hvac_J += per_W * hvacCrankPower(in);
 }
 
 const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   const double vals[] = {in.target_speed_m_s, in.target_accel_m_s2, in.road_grade,
                          in.engine_torque_Nm, in.engine_max_torque_Nm, in.engine_min_torque_Nm,
                          in.em_torque_Nm, in.em_max_torque_Nm, in.friction_brake_force_N,
-                         in.fan_power_W, in.ambient_T_K, in.accel_pedal_cmd, in.brake_pedal_cmd};
+                         in.fan_power_W, in.ambient_T_K, in.accel_pedal_cmd, in.brake_pedal_cmd,
+                         in.hvac_compressor_W, in.hvac_electric_W};
   for (double x : vals)
     if (!std::isfinite(x)) throw ModelDivergence("vehicle", "inputs", "non-finite input");
   if (!(dt > 0.0)) throw ModelDivergence("vehicle", "dt", "must be > 0");
@@ -182,7 +189,8 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
     out_.tc_pump_torque_Nm = out_.tc_turbine_torque_Nm = 0.0;
   }
   out_.aux_power_W = c.P_aux;
-  out_.dcdc_input_power_W = p_.aux.electric_dcdc_W / p_.aux.dcdc_efficiency;
+  out_.dcdc_input_power_W = p_.aux.electric_dcdc_W / p_.aux.dcdc_efficiency +
+                            (p_.aux.electricViaDcdc() ? in.hvac_electric_W / p_.aux.dcdc_efficiency : 0.0);
   out_.energy.dcdc_J += out_.dcdc_input_power_W * dt;
   out_.energy.kinetic_J = kineticEnergy();
   return out_;

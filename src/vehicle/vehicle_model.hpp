@@ -80,6 +80,11 @@ struct VehicleInputs {
                                       // the gearbox stays in neutral until it runs again
   bool has_fan_power = false;         // true when the cooling node provides fan_power_W
   double fan_power_W = 0.0;           // fan shaft power [W] (may be < 0: windmilling)
+  // HVAC (the hvac participant, hvac:=on): the A/C compressor's shaft power on the crank [W] and
+  // the HVAC's 24 V electric load [W], fed the way the aux set feeds its 24 V consumers (the
+  // alternator on the crank, or the 48 V DC/DC: AuxParams::electricViaDcdc()).
+  double hvac_compressor_W = 0.0;
+  double hvac_electric_W = 0.0;
   double ambient_T_K = 293.15;        // for the air density [K]
   bool neutral_request = false;       // force neutral (coast-down, sailing)
   bool driver_enabled = true;         // false: pedals below are applied open-loop
@@ -96,6 +101,8 @@ struct VehicleEnergy {
   // electric system (alternator). Booked as the consumer's share P_i/P_aux of each macro
   // step's aux work (all consumers see the same crank-speed factor, see auxPower()).
   double fan_J = 0.0, steering_J = 0.0, pneumatic_J = 0.0, electric_J = 0.0;
+  // HVAC on the crank: A/C compressor + its electric load through the alternator (part of aux_J).
+  double hvac_J = 0.0;
   // Hybrid stop-start: while the engine is stopped the crank-driven steering pump and air
   // compressor stand, but their demand (air used by doors and kneeling, steering) is not gone:
   // it is deferred and paid back after the restart on top of their normal power (at most doubling
@@ -187,6 +194,8 @@ class VehicleModel {
   // vehicle_model.cpp
   void evaluateDriver(double dt, const VehicleInputs& in);
   double auxPower(const VehicleInputs& in) const;
+  /// HVAC's load on the crank [W]: compressor + electric / alternator efficiency (alternator sets).
+  double hvacCrankPower(const VehicleInputs& in) const;
   /// Splits one macro step's aux work dE_aux_J (at aux power P_aux_W) over the consumers.
   void bookAuxConsumers(double dE_aux_J, double P_aux_W, const VehicleInputs& in);
 

@@ -88,6 +88,7 @@ void AuxParams::declare(ParamSet& ps) {
   ps.add("fan_default_W", fan_default_W, "W", -1e4, 5e4, "fan power without cooling node");
   ps.add("electric_dcdc_W", electric_dcdc_W, "W", 0.0, 2e4, "24 V consumers fed by the 48 V DC/DC (hybrid)");
   ps.add("dcdc_efficiency", dcdc_efficiency, "-", 0.5, 1.0, "48 V -> 24 V DC/DC efficiency");
+  ps.add("alternator_efficiency", alternator_efficiency, "-", 0.3, 1.0, "alternator mechanical -> electric");
 }
 
 void GearLossSetParams::declare(ParamSet& ps) {

@@ -100,6 +100,11 @@ struct AuxParams {
   // battery draws electric_dcdc_W / dcdc_efficiency (VehicleOutputs::dcdc_input_power_W).
   double electric_dcdc_W = 0.0;
   double dcdc_efficiency = 0.95;
+  // Mechanical-to-electric efficiency of the alternator [-]: the crank load of an electric
+  // consumer added at run time (the HVAC's) in a set without a DC/DC.
+  double alternator_efficiency = 0.7;
+  /// The set feeds its 24 V consumers from the 48 V battery through the DC/DC (else the alternator).
+  bool electricViaDcdc() const { return electric_dcdc_W > 0.0; }
   /// Registers the keys (without prefix) = the `aux:` group of an auxiliary set
   /// (config/aux/<set>.yaml, selected with the launch argument aux:=<set>).
   void declare(ParamSet& ps);

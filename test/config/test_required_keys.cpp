@@ -22,6 +22,8 @@
 #include "../common/input_errors.hpp"
 #include "cooling/cooling_params.hpp"
 #include "cooling/cooling_warnings.hpp"
+#include "hvac/hvac_params.hpp"
+#include "hvac/hvac_warnings.hpp"
 #include "cosim/core/diagnostics_params.hpp"
 #include "cylinder/cylinder_params.hpp"
 #include "emachine/emachine_params.hpp"
@@ -86,6 +88,7 @@ std::vector<ShippedFile> shippedFiles() {
       {"config/aftertreatment.yaml", withWarnings<aftertreatment::AtsParams, aftertreatment::AftertreatmentWarnings>(), {}},
       {"config/battery.yaml", withWarnings<battery::BatteryParams, battery::BatteryWarnings>(), {}},
       {"config/cooling.yaml", withWarnings<cooling::CoolingParams, cooling::CoolingWarnings>(), {}},
+      {"config/hvac.yaml", withWarnings<hvac::HvacParams, hvac::HvacWarnings>(), {}},
       {"config/emachine.yaml", withWarnings<emachine::EMachineParams, emachine::EMachineWarnings>(), {}},
       {"config/ems.yaml", declared<ems::EmsParams>(), {}},
       {"config/engine_map.yaml",

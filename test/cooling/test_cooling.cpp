@@ -460,3 +460,49 @@ TEST(CoolingModel, HeaterValveCyclesWithHysteresisAtLowHeat) {
   EXPECT_GT(Tmin, celsiusToK(35.0 - 0.5));
   EXPECT_LT(Tmax, celsiusToK(40.0 + 0.5));
 }
+
+// The hvac participant's cabin (hvac:=on): its demand served up to the convectors' capacity
+// G_h (T_c - T_cabin), the fuel-fired heater's heat counted as heat in, the balance closed.
+TEST(CoolingModel, HvacDemandToTheCabinAndFuelHeaterHeatCloseTheBalance) {
+  CoolingParams p = yamlParams();
+  CoolingModel m(p);
+  const double Ta = celsiusToK(0.0);
+  m.reset(Ta);
+  CoolingInputs in;
+  in.ambient_T_K = Ta;
+  in.engine_heat_W = 15e3;
+  in.pump_speed_rad_s = rpmToRadps(800.0);
+  in.cabin_from_hvac = true;
+  in.cabin_T_K = celsiusToK(10.0);
+  in.cabin_heat_demand_W = 30e3;
+  in.aux_heater_heat_W = 30e3;
+  const double dt = 0.1;
+  double e_in = 0, e_out = 0;
+  bool capacity_seen = false, demand_seen = false;
+  for (int k = 0; k < 30000; ++k) {
+    in.cabin_heat_demand_W = k < 15000 ? 30e3 : 8e3;
+    const double T_c = m.outputs().coolant_ht_T_K;
+    m.step(dt, in);
+    const CoolingOutputs& o = m.outputs();
+    const double T_c1 = o.coolant_ht_T_K;
+    if (T_c >= p.heater.min_coolant_K + 1.0) {  // valve open: the demand if the cores can (at the
+      // step's start), else the conductance branch of the implicit update G_h (T_c,new - T_cab)
+      if (p.heater.conductance_W_K * (T_c - in.cabin_T_K) < in.cabin_heat_demand_W) {
+        EXPECT_NEAR(o.heater_heat_W, p.heater.conductance_W_K * (T_c1 - in.cabin_T_K), 1e-6);
+        capacity_seen = true;
+      } else {
+        EXPECT_NEAR(o.heater_heat_W, in.cabin_heat_demand_W, 1e-6);
+        demand_seen = true;
+      }
+    }
+    if (T_c < p.heater.min_coolant_K - p.heater.lockout_hysteresis_K) EXPECT_EQ(o.heater_heat_W, 0.0);
+    e_in += (in.engine_heat_W + in.aux_heater_heat_W) * dt;
+    e_out += (o.radiator_ht_heat_W + o.radiator_lt_heat_W + o.heater_heat_W + o.surface_loss_W) * dt;
+  }
+  EXPECT_TRUE(capacity_seen);
+  EXPECT_TRUE(demand_seen);
+  const CoolingOutputs& o = m.outputs();
+  EXPECT_NEAR(o.aux_heater_J, 30e3 * 3000.0, 1e-6);
+  EXPECT_NEAR(o.energy_residual_J, 0.0, 1e-9 * e_in);
+  EXPECT_NEAR(e_in - e_out - o.stored_change_J, 0.0, 1e-9 * e_in);
+}

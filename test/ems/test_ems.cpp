@@ -329,6 +329,30 @@ TEST(StopStart, FailedStartStopsTheRunAndSocRestart) {
   }
 }
 
+// The HVAC's belt-driven A/C asks the engine to run (hvac:=on): a standing warm engine is not
+// stopped while the request holds, a stopped one is restarted by it, and stops once it ends.
+TEST(StopStart, ClimateRunRequestKeepsOrRestartsTheEngine) {
+  const EmsParams p = yamlParams();
+  QuadraticFuel fuel(2.3, 0.0, 5000.0, hbt::units::kDieselLhv_J_kg);
+  EmsModel m(p, fuel);
+  EmsInputs in = warmTraction(40.0, 62.8);
+  in.stopped = true;
+  in.climate_run_request = true;
+  for (int k = 0; k < 500; ++k) ASSERT_TRUE(m.step(0.01, in).engine_on);
+  EXPECT_EQ(m.decision().reason, Reason::ClimateRequest);
+  EXPECT_EQ(m.decision().engine_stops, 0);
+  in.climate_run_request = false;  // cabin cooled down: the engine stops
+  EXPECT_FALSE(m.step(0.01, in).engine_on);
+  EXPECT_EQ(m.decision().engine_stops, 1);
+  in.engine_speed_rad_s = 0.0;
+  for (int k = 0; k < 100; ++k) ASSERT_FALSE(m.step(0.01, in).engine_on);
+  in.climate_run_request = true;  // the cabin warmed again: restart while standing
+  const EmsDecision& c = m.step(0.01, in);
+  EXPECT_EQ(c.mode, Mode::Cranking);
+  EXPECT_EQ(c.reason, Reason::ClimateRequest);
+  EXPECT_EQ(m.decision().engine_starts, 1);
+}
+
 TEST(EmsParams, BadInputNamesTheKey) {
   auto expectKey = [](const std::string& key, ParamValue v) {
     ParamSource src = readYamlParams("config/ems.yaml");

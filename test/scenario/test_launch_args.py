@@ -62,6 +62,7 @@ class LaunchArgs(unittest.TestCase):
         self.rejected("engine:=foo", "map, 1d")
         self.rejected("solver:=euler", "fsm, tvd")
         self.rejected("rviz:=yes", "true, false")
+        self.rejected("hvac:=auto", "on, off")
 
     def test_missing_files(self):
         self.rejected("aux:=foo", "fan_only", "vecto_p1_example")
@@ -88,6 +89,8 @@ class LaunchArgs(unittest.TestCase):
         self.assertIn("battery is not a participant of baseline_urban", err)
         rc, _, err = check("remote:=cooling", "remote_host:=h", "thermal:=false")
         self.assertIn("cooling is not a participant", err)
+        rc, _, err = check("remote:=hvac", "remote_host:=h", "hvac:=off")
+        self.assertIn("hvac is not a participant", err)
         rc, _, err = check("remote:=stepper", "remote_host:=h")
         self.assertIn("'stepper' is not a participant that can run remotely", err)
         rc, _, err = check("remote:=engine", "remote_host:=h;rm", )
@@ -134,7 +137,7 @@ class LaunchArgs(unittest.TestCase):
 
     def test_valid_arguments_pass_unchanged(self):
         args = ["ambient:=0", "engine:=1d", "solver:=tvd", "mode:=nodelets", "aux:=fan_only",
-                "gearbox:=vecto_standard", "cycle:=Urban", "rviz:=false"]
+                "gearbox:=vecto_standard", "cycle:=Urban", "rviz:=false", "hvac:=off"]
         rc, out, _ = check(*args)
         self.assertEqual(rc, 0)
         self.assertEqual(out, ["ambient:=0.0"] + args[1:])

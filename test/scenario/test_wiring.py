@@ -15,7 +15,7 @@ class Wiring(unittest.TestCase):
     def test_every_participant_has_its_five_places(self):
         names = wiring.participants()
         self.assertEqual(len(names), len(set(names)), names)
-        self.assertEqual(set(names), {"vehicle", "engine", "aftertreatment", "cooling", "ems", "emachine", "battery"})
+        self.assertEqual(set(names), {"vehicle", "engine", "aftertreatment", "cooling", "hvac", "ems", "emachine", "battery"})
         with open(os.path.join(REPO, "nodelet_plugins.xml")) as f:
             plugins = f.read()
         for n in names:
@@ -37,7 +37,7 @@ class Wiring(unittest.TestCase):
                 self.assertIn(name, msgs, (n, key))
                 self.assertEqual(wiring.topic(n, key), "/%s/%s" % (n, key))
                 n_topics += 1
-        self.assertEqual(n_topics, 13)
+        self.assertEqual(n_topics, 14)
 
     def test_an_undeclared_key_is_named_with_its_file(self):
         with self.assertRaises(wiring.WiringError) as cm:

@@ -74,6 +74,7 @@ ARGS = {
     "config": existing("dir"),
     "architecture": choice("conventional", "p1_48v"),
     "thermal": choice("true", "false"),
+    "hvac": choice("on", "off"),            # the hvac participant (cabin, heater, A/C); off: cooling's heater/
     "order": lambda v, repo, config=None: v,  # Gauss-Seidel groups: checked by the stepper before step 0
     "remote": lambda v, repo, config=None: remote_list(v),  # participants on another host
     "remote_host": lambda v, repo, config=None: host(v),
@@ -130,12 +131,14 @@ def check_remote(scenario, given):
     present = {"vehicle", "engine"}
     if given.get("thermal", "true") == "true":
         present |= {"aftertreatment", "cooling"}
+        if given.get("hvac", "on") == "on":
+            present |= {"hvac"}
     if arch == "p1_48v":
         present |= {"ems", "emachine", "battery"}
     for n in remote:
         if n not in present:
-            sys.exit("twin: argument 'remote': %s is not a participant of %s (architecture %s, thermal %s)"
-                     % (n, scenario, arch, given.get("thermal", "true")))
+            sys.exit("twin: argument 'remote': %s is not a participant of %s (architecture %s, thermal %s, hvac %s)"
+                     % (n, scenario, arch, given.get("thermal", "true"), given.get("hvac", "on")))
 
 
 def check_architecture(scenario, given):

@@ -118,13 +118,15 @@ def hybrid_summary(data, summary):
         s["eta_charge_chain"] = eta_charge
         s["battery_energy_change_kwh"] = dE / J_PER_KWH
         if eta_eng > 0 and eta_charge > 0:
-            s["fuel_soc_corrected_kg"] = fuel - dE / (DIESEL_LHV_J_KG * eta_eng * eta_charge)
+            # the engine's fuel corrected, plus the fuel-fired heater's (in fuel_kg with hvac:=on)
+            total = summary.get("fuel_kg", fuel)
+            s["fuel_soc_corrected_kg"] = total - dE / (DIESEL_LHV_J_KG * eta_eng * eta_charge)
     return s
 
 
 # a baseline must have run under the same conditions as the hybrid it is compared with (the aux set
 # differs by design: the hybrid's carries the DC/DC load)
-COMPARABLE_KEYS = ("engine_model", "ambient_c", "start", "gearbox_set", "macro_step_s", "sim_time_s")
+COMPARABLE_KEYS = ("engine_model", "ambient_c", "start", "gearbox_set", "hvac", "macro_step_s", "sim_time_s")
 
 
 class BaselineError(ValueError):

@@ -5,12 +5,14 @@ Three balances, each from the cumulative energies the participants book themselv
   fuel:    m_fuel LHV            = W_engine,net + Q_coolant + Q_exhaust+other
   crank:   W_engine,net          = W_crank,engine + delay        (engine's own work vs work the
                                    driveline received: they differ by the one-exchange delay)
+  heater (hvac:=on): m_fuel,heater LHV = Q_heater,coolant + flue loss  (fuel = Q / eta LHV, exact)
+  cabin (hvac:=on):  Q_convectors + Q_people + Q_sun - Q_A/C - Q_body - Q_fresh - Q_doors = C dT
   electric (hybrid):
            W_em,crank (e-machine's own crank work) + e-machine losses = E_dc (inverter DC energy)
            E_battery,terminal + unmet = E_dc + E_dcdc (24 V consumers through the DC/DC)
            E_battery,chemical = E_battery,terminal + battery losses + RC stored energy
   driveline (vehicle_model.hpp):
-           W_crank,engine + W_em = aux (steering, pneumatic, electric, fan) + gearbox drag
+           W_crank,engine + W_em = aux (steering, pneumatic, electric, HVAC, fan) + gearbox drag
                                    + converter + gear load + retarder + axle + shift
                                    + rolling + aero + grade (potential) + friction brakes
                                    + kinetic change + residual
@@ -28,6 +30,7 @@ import numpy as np
 
 from twin_tools.units import DIESEL_LHV_J_KG
 from twin_tools import wiring
+from twin_tools.report import hvac
 
 # topics (twin_tools.wiring: the participants' topics.yaml)
 BATTERY_STATE = wiring.topic("battery", "state")
@@ -47,6 +50,7 @@ DRIVELINE_SINKS = [
     ("aux_steering", "aux_steering_work_j", "steering pump"),
     ("aux_pneumatic", "aux_pneumatic_work_j", "pneumatic system (air compressor)"),
     ("aux_electric", "aux_electric_work_j", "electric system (alternator)"),
+    ("aux_hvac", "aux_hvac_work_j", "HVAC: A/C compressor + its electric load via the alternator"),
     ("fan", "fan_work_j", "cooling fan"),
     ("gearbox_drag", "gearbox_drag_loss_j", "gearbox drag"),
     ("converter", "converter_loss_j", "torque converter + lock-up slip"),
@@ -62,7 +66,7 @@ DRIVELINE_SINKS = [
 ]
 # Groups for the picture (sinks of the driveline balance).
 GROUPS = [
-    ("auxiliaries", ["aux_steering", "aux_pneumatic", "aux_electric", "fan"]),
+    ("auxiliaries", ["aux_steering", "aux_pneumatic", "aux_electric", "aux_hvac", "fan"]),
     ("driveline losses", ["gearbox_drag", "converter", "gear_load", "retarder", "axle", "shift"]),
     ("road loads", ["rolling", "aero", "grade"]),
     ("friction brakes", ["friction_brakes"]),
@@ -118,6 +122,7 @@ def energy_ledger(data):
         L["battery_losses"] = _last(bat, "loss_energy_j")
         L["battery_chemical"] = _last(bat, "chemical_energy_j")
         L["electric_residual"] = L["battery_terminal"] + L["battery_unmet"] - L["em_dc"] - L["dcdc"]
+    L.update(hvac.hvac_ledger(data))
     return {k: v / J_PER_KWH for k, v in L.items()}
 
 
@@ -170,7 +175,7 @@ def ledger_table(L):
     """Markdown lines of the ledger."""
     fuel = L["fuel_chemical"]
     pct = (lambda x: "%.1f" % (100.0 * x / fuel)) if fuel > 0 else (lambda x: "")
-    rows = [("fuel chemical energy (LHV %.1f MJ/kg)" % (DIESEL_LHV_J_KG / 1e6), "fuel_chemical"),
+    rows = [("engine fuel chemical energy (LHV %.1f MJ/kg)" % (DIESEL_LHV_J_KG / 1e6), "fuel_chemical"),
             ("engine heat to coolant", "engine_heat_to_coolant"),
             ("engine exhaust and other losses", "engine_exhaust_and_other"),
             ("engine brake work, net", "engine_net"),
@@ -192,6 +197,7 @@ def ledger_table(L):
                  ("battery losses (ohmic + polarisation)", "battery_losses"),
                  ("battery chemical energy (net, > 0 released)", "battery_chemical"),
                  ("residual of the electric path (terminal - DC - DC/DC)", "electric_residual")]
+    rows += [(label, key) for key, label in hvac.LEDGER_ROWS if key in L]
     out = ["| path | kWh | % of fuel |", "|---|---|---|"]
     for label, key in rows:
         out.append("| %s | %.3f | %s |" % (label, L[key], pct(L[key])))
@@ -209,8 +215,8 @@ def plot_ledger(L, path):
                   ("exhaust + other", L["engine_exhaust_and_other"]),
                   ("brake work (net)", L["engine_net"])]),
         ("crank", [(g, sum(L[k] for k in keys)) for g, keys in GROUPS]),
-        ("driveline losses", [(label, L[key]) for key, _, label in DRIVELINE_SINKS[4:10]]),
-        ("wheels", [(label, L[key]) for key, _, label in DRIVELINE_SINKS[10:]]),
+        ("driveline losses", [(label, L[key]) for key, _, label in DRIVELINE_SINKS[5:11]]),
+        ("wheels", [(label, L[key]) for key, _, label in DRIVELINE_SINKS[11:]]),
     ]
     cmap = plt.get_cmap("tab20")
     c = 0

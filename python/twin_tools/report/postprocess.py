@@ -25,7 +25,7 @@ import sys
 import numpy as np
 
 from twin_tools.bags.reader import BagError, open_bag
-from twin_tools.report import diagnostics, hybrid, ledger, thermal
+from twin_tools.report import diagnostics, hvac, hybrid, ledger, thermal
 from twin_tools.units import DIESEL_DENSITY_KG_L
 from twin_tools import wiring
 
@@ -158,6 +158,8 @@ def summarise(scenario, args, status, data, stops_csv, sv=ledger.STOP_SERVICE_DE
         "start": args.get("start") or "cold",  # cold: everything at ambient; warm: warm_start/ of the configs
         "aux_set": args.get("aux") or ("vecto_p1_example_48v" if arch == "p1_48v" else "vecto_p1_example"),
         "gearbox_set": args.get("gearbox") or "typical",  # gear loss set, config/gearbox/<set>.yaml
+        # the hvac participant ran (launch argument hvac, default on; only with the thermal nodes)
+        "hvac": (args.get("hvac") or "on") if (args.get("thermal") or "true") == "true" else "off",
         "macro_step_s": status["macro_step_s"],
         "sim_time_s": status["sim_time_s"],
         "wall_time_s": status["wall_time_s"],
@@ -165,7 +167,9 @@ def summarise(scenario, args, status, data, stops_csv, sv=ledger.STOP_SERVICE_DE
     if veh is None or eng is None:
         return s
     dist_m = veh["distance_m"][-1]
-    fuel_kg = eng["fuel_mass_kg"][-1]
+    engine_fuel_kg = eng["fuel_mass_kg"][-1]
+    heater_fuel_kg = hvac.heater_fuel_kg(data)  # the fuel-fired heater's (hvac:=on), counted in fuel_kg
+    fuel_kg = engine_fuel_kg + heater_fuel_kg
     err = (veh["speed_m_s"] - veh["target_speed_m_s"]) * 3.6
     s.update({
         "distance_km": dist_m / 1000.0,
@@ -177,6 +181,8 @@ def summarise(scenario, args, status, data, stops_csv, sv=ledger.STOP_SERVICE_DE
         "speed_rmse_kmh": float(np.sqrt(np.mean(err ** 2))),
         "aux_kwh": veh["aux_work_j"][-1] / J_PER_KWH,
     })
+    if data.get(hvac.HVAC_STATE) is not None:
+        s["engine_fuel_kg"] = engine_fuel_kg
     s = {k: v for k, v in s.items() if v is not None}
     served, total, pos_err = stops_served(veh, stops_csv, sv)
     if total is not None:
@@ -187,10 +193,14 @@ def summarise(scenario, args, status, data, stops_csv, sv=ledger.STOP_SERVICE_DE
         s["energy_kwh"] = L
         s["energy_ledger_closure"] = ledger.ledger_closure(L)
     fuel, time = ledger.fuel_by_state(data, sv)
+    if fuel is not None and data.get(hvac.HVAC_STATE) is not None:  # the heater's fuel, its burning time
+        fuel["aux_heater"] = heater_fuel_kg
+        time["aux_heater"] = hvac.heater_on_time_s(data[hvac.HVAC_STATE])
     if fuel is not None:
         s["fuel_by_state_kg"] = fuel
         s["time_by_state_s"] = time
     s.update(thermal.thermal_summary(data))
+    s.update(hvac.hvac_summary(data))
     s.update(hybrid.hybrid_summary(data, s))
     return s
 
@@ -240,6 +250,7 @@ def plots(out, data):
     save(fig, "fuel.png")
 
     thermal.thermal_plots(data, save, plt)
+    hvac.hvac_plots(data, save, plt)
     hybrid.hybrid_plots(data, save, plt)
     L = ledger.energy_ledger(data)
     if L is not None:
@@ -276,13 +287,17 @@ def report(out, s, status, files, diag_lines=(), gaps=()):
         lines += ["## Energy ledger", ""] + ledger.ledger_table(s["energy_kwh"]) + [""]
     if "fuel_by_state_kg" in s:
         fuel, time = s["fuel_by_state_kg"], s["time_by_state_s"]
-        tot_f, tot_t = sum(fuel.values()), sum(time.values())
+        tot_f = sum(fuel.values())
+        tot_t = sum(v for k, v in time.items() if k in ledger.FUEL_STATES)  # the engine's states
         lines += ["## Fuel by operating state", "", "| state | fuel kg | % fuel | time s | % time |",
                   "|---|---|---|---|---|"]
         for k in ledger.FUEL_STATES:
             lines.append("| %s | %.4f | %.1f | %.1f | %.1f |" % (
                 k, fuel[k], 100 * fuel[k] / tot_f if tot_f > 0 else 0, time[k],
                 100 * time[k] / tot_t if tot_t > 0 else 0))
+        if "aux_heater" in fuel:  # beside the engine's states: its time is the burner's on time
+            lines.append("| fuel-fired heater (burner on) | %.4f | %.1f | %.1f | |" % (
+                fuel["aux_heater"], 100 * fuel["aux_heater"] / tot_f if tot_f > 0 else 0, time["aux_heater"]))
         lines.append("")
     lines += list(diag_lines)
     if s.get("sim_time_s"):

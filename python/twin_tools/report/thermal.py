@@ -80,6 +80,8 @@ def thermal_summary(data):
         if warm is not None:
             s["coolant_warm_s"] = warm
         heat_in = float(cool["engine_heat_j"][-1] + cool["lt_heat_j"][-1])
+        if "aux_heater_j" in cool:  # the fuel-fired heater's heat (hvac:=on)
+            heat_in += float(cool["aux_heater_j"][-1])
         if heat_in > 0:
             s["cooling_balance_closure"] = abs(float(cool["energy_residual_j"][-1])) / heat_in
     if exh is not None:

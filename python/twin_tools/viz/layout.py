@@ -1,6 +1,7 @@
 """What the live view (scripts/viz_node) draws and where: one frame of markers from the latest
 message of every topic the run has (a gauge exists only when its topic does: a conventional
-run has no battery, e-machine or EMS; thermal:=false has no cooling or aftertreatment).
+run has no battery, e-machine or EMS; thermal:=false has no cooling or aftertreatment;
+hvac:=off no cabin).
 
 Frame 'bus' (x along the road [m], z up): the bus at the origin on the road profile (+-300 m,
 altitude relative to the bus, pitched with the gradient, brake lights when braking), the
@@ -11,7 +12,9 @@ above the road in the plane y = 0 facing the camera of config/twin.rviz (x from 
   left    dials: speed vs target [km/h], engine speed [rpm]; the gear (1..6, C converter, L locked);
           the EMS mode (hybrid)
   right   bars: engine torque vs its live full-load and motoring torque, e-machine crank torque vs
-          its live limits, battery SOC, coolant, DOC / DPF / SCR bricks, battery cell, winding [degC]
+          its live limits, battery SOC, coolant, cabin (with "heater" while the fuel-fired heater
+          burns, "A/C x kW" while the compressor runs), DOC / DPF / SCR bricks, battery cell,
+          winding [degC]
   below   power flows [kW]: fuel -> engine -> wheels, battery <-> e-machine -> wheels,
           wheels -> friction brakes (arrow width ~ sqrt(power))
 Wheel and brake power are the rates of the vehicle's cumulative wheel_work_j and
@@ -34,6 +37,7 @@ RED = (0.95, 0.22, 0.18)       # temperatures, friction brakes
 PURPLE = (0.7, 0.3, 0.95)      # e-machine
 YELLOW = (0.95, 0.85, 0.15)    # battery
 CYAN = (0.1, 0.8, 0.8)         # bus stops
+COLD = (0.55, 0.75, 1.0)       # A/C
 ROAD = (0.45, 0.45, 0.45)
 # the power-flow diagram's component blocks: the hue of their gauges, darker (white labels)
 DIM_ORANGE, DIM_RED, DIM_YELLOW, DIM_PURPLE = (0.5, 0.3, 0.08), (0.5, 0.12, 0.1), (0.5, 0.45, 0.08), (0.45, 0.2, 0.6)
@@ -149,6 +153,7 @@ def draw_dials(sc, st):
 def draw_bars(sc, st):
     """The bar gauges of the topics present, left to right from x = 13 m, 5.4 m apart."""
     e, em, b, c, a = (st.get(k) for k in ("engine", "emachine", "battery", "cooling", "aftertreatment"))
+    h = st.get("hvac")
     bars = []
     if e is not None:
         bars.append(("engine", "Nm", e.brake_torque_nm, -300.0, 1200.0, ORANGE,
@@ -160,6 +165,8 @@ def draw_bars(sc, st):
         bars.append(("SOC", "%", 100.0 * b.soc, 0.0, 100.0, YELLOW, [], "%.1f"))
     if c is not None:
         bars.append(("coolant", "degC", c.coolant_ht_temperature_k - K0, 0.0, 120.0, RED, [], "%.0f"))
+    if h is not None:
+        bars.append(("cabin", "degC", h.cabin_temperature_k - K0, -10.0, 45.0, RED, [], "%.1f"))
     if a is not None:
         for name, t in (("DOC", a.doc_temperature_k), ("DPF", a.dpf_temperature_k), ("SCR", a.scr_temperature_k)):
             bars.append((name, "degC", t - K0, 0.0, 600.0, RED, [], "%.0f"))
@@ -172,6 +179,10 @@ def draw_bars(sc, st):
     if a is not None and a.light_off:
         i = [x[0] for x in bars].index("SCR")
         vm.text(sc, "bars", 13.0 + 5.4 * i, 45.0, "lit off", vm.TEXT_H * 0.8, GREEN)
+    if h is not None and (h.aux_heater_on or h.compressor_power_w > 0.0):
+        i = [x[0] for x in bars].index("cabin")
+        what = "heater" if h.aux_heater_on else "A/C %.1f kW" % (h.compressor_power_w / 1e3)
+        vm.text(sc, "bars", 13.0 + 5.4 * i, 45.0, what, vm.TEXT_H * 0.8, ORANGE if h.aux_heater_on else COLD)
 
 
 def draw_flows(sc, st, p_wheel_w, p_brake_w):

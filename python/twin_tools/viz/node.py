@@ -27,7 +27,7 @@ from twin_tools.viz import markers as viz_markers
 # what the view draws: (participant, key) of the wiring; the layout finds each message under its
 # participant's name (twin_tools.viz.layout)
 DRAWN = (("vehicle", "state"), ("engine", "state"), ("cooling", "state"), ("aftertreatment", "state"),
-         ("battery", "state"), ("emachine", "state"), ("ems", "command"))
+         ("battery", "state"), ("emachine", "state"), ("ems", "command"), ("hvac", "state"))
 
 
 def drawn_topics():

@@ -27,6 +27,7 @@ void CoolingParticipant::configure() {
   heat_ = &addInputFrom<hybrid_bus_twin::EngineHeat>("engine", "heat");
   vehicle_ = &addInputFrom<hybrid_bus_twin::VehicleToCooling>("vehicle", "to_cooling");
   if (inScenario("emachine")) emachine_ = &addInputFrom<hybrid_bus_twin::EMachineState>("emachine", "state");
+  if (inScenario("hvac")) hvac_ = &addInputFrom<hybrid_bus_twin::HvacState>("hvac", "state");
   state_pub_ = addOwnOutput<hybrid_bus_twin::CoolingState>("state");
   readWarningThresholds(warnings_);
   warnings_.validate(configFile());
@@ -72,6 +73,14 @@ void CoolingParticipant::step(const ros::Time& t, double dt_s) {
     now.lt_heat_J = m.heat_to_coolant_energy_j;
     point.lt_heat_W = m.lt_heat_w;
   }
+  if (hvac_) {  // the cabin's demand, the fuel-fired heater's heat (hvac:=on)
+    const auto& a = hvac_->at(t);
+    point.cabin_from_hvac = true;
+    point.cabin_heat_demand_W = a.heating_demand_w;
+    point.cabin_T_K = a.cabin_temperature_k;
+    point.aux_heater_heat_W = a.aux_heater_heat_w;
+    now.aux_heater_heat_J = a.aux_heater_heat_j;
+  }
   const CoolingInputs in = inputs_.next(now, point, dt_s);
   model_->step(dt_s, in);
   last_in_ = in;
@@ -102,6 +111,7 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.radiator_ht_heat_w = o.radiator_ht_heat_W;
   s.radiator_lt_heat_w = o.radiator_lt_heat_W;
   s.heater_heat_w = o.heater_heat_W;
+  s.aux_heater_heat_w = o.aux_heater_heat_W;
   s.surface_loss_w = o.surface_loss_W;
   s.engine_heat_w = last_in_.engine_heat_W;
   s.lt_heat_w = last_in_.lt_heat_W;
@@ -114,6 +124,7 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.radiator_ht_j = o.radiator_ht_J;
   s.radiator_lt_j = o.radiator_lt_J;
   s.heater_j = o.heater_J;
+  s.aux_heater_j = o.aux_heater_J;
   s.surface_loss_j = o.surface_loss_J;
   s.stored_energy_change_j = o.stored_change_J;
   s.energy_residual_j = o.energy_residual_J;

@@ -12,6 +12,9 @@
 // state: everything at ambient, cold start); /scenario/ambient_pressure_pa (default the standard atmosphere).
 // Hybrid (the emachine participant runs): /emachine/state lt_heat_w (e-machine housing +
 // inverter heat into the LT coolant) feeds the LT circuit; baseline: 0 W (the circuit idles).
+// HVAC (the hvac participant runs, hvac:=on): /hvac/state heating_demand_w and cabin_temperature_k
+// drive the convectors instead of heater/'s balance point, and aux_heater_heat_j (differenced
+// over the step) is the fuel-fired heater's heat into the HT coolant.
 // Diagnostics (docs/diagnostics.md): warning coolant_overheat (HT coolant above diagnostics/overheat_c
 // until below diagnostics/overheat_release_c, for diagnostics/duration_s of config/cooling.yaml);
 // key/values coolant temperatures, thermostat opening, fan engagement and power.
@@ -19,6 +22,7 @@
 #include "common/units.hpp"
 #include <hybrid_bus_twin/EMachineState.h>
 #include <hybrid_bus_twin/EngineHeat.h>
+#include <hybrid_bus_twin/HvacState.h>
 #include <hybrid_bus_twin/VehicleToCooling.h>
 
 #include <memory>
@@ -47,6 +51,7 @@ class CoolingParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::EngineHeat>* heat_ = nullptr;
   cosim::Input<hybrid_bus_twin::VehicleToCooling>* vehicle_ = nullptr;
   cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;  // the emachine runs (hybrid) only
+  cosim::Input<hybrid_bus_twin::HvacState>* hvac_ = nullptr;          // the hvac runs (hvac:=on) only
   cosim::Output state_pub_;
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = units::kStandardAtmosphere_Pa;
   CoolingInputs last_in_;

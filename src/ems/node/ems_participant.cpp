@@ -38,6 +38,7 @@ void EmsParticipant::configure() {
   battery_ = &addInputFrom<hybrid_bus_twin::BatteryState>("battery", "state");
   if (inScenario("cooling")) cooling_ = &addInputFrom<hybrid_bus_twin::CoolingState>("cooling", "state");
   if (inScenario("aftertreatment")) ats_ = &addInputFrom<hybrid_bus_twin::AftertreatmentState>("aftertreatment", "state");
+  if (inScenario("hvac")) hvac_ = &addInputFrom<hybrid_bus_twin::HvacState>("hvac", "state");
   command_pub_ = addOwnOutput<hybrid_bus_twin::EmsCommand>("command");
   engine_pub_ = addOwnOutput<hybrid_bus_twin::EngineCommand>("engine_command");
   last_demand_.ambient_temperature_k = ambient_T_K_;
@@ -80,6 +81,7 @@ void EmsParticipant::step(const ros::Time& t, double dt_s) {
   in.charge_limit_W = b.charge_power_limit_w;
   if (cooling_) in.coolant_T_K = cooling_->at(t).coolant_ht_temperature_k;
   if (ats_) in.scr_T_K = ats_->at(t).scr_temperature_k;
+  if (hvac_) in.climate_run_request = hvac_->at(t).engine_run_request;
   model_->step(dt_s, in);
   last_demand_ = d;
 }

@@ -7,7 +7,8 @@
 //         step), /emachine/state (temperatures for the live torque limits), /battery/state
 //         (SOC, T, power limits, terminal voltage),
 //         /cooling/state (HT coolant) and /aftertreatment/state (SCR brick) when those
-//         participants run (else the engine and ATS count as warm).
+//         participants run (else the engine and ATS count as warm); /hvac/state
+//         (engine_run_request: the belt-driven A/C needs the engine, no stop) when the hvac runs.
 // Outputs (stamped t_k + P): /ems/command (EmsCommand: split, mode and reason, for the e-machine,
 //         the vehicle and the bag), /ems/engine_command (EngineCommand for the engine node).
 // Parameters: private namespace = config/ems.yaml; the map engine and the e-machine YAML of the
@@ -17,6 +18,7 @@
 // e-machine's and the battery's); key/values mode, reason, equivalence factor, stops/starts.
 #pragma once
 #include "common/units.hpp"
+#include <hybrid_bus_twin/HvacState.h>
 #include <hybrid_bus_twin/AftertreatmentState.h>
 #include <hybrid_bus_twin/BatteryState.h>
 #include <hybrid_bus_twin/CoolingState.h>
@@ -78,6 +80,7 @@ class EmsParticipant : public cosim::Participant {
   cosim::Input<hybrid_bus_twin::BatteryState>* battery_ = nullptr;
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;
   cosim::Input<hybrid_bus_twin::AftertreatmentState>* ats_ = nullptr;
+  cosim::Input<hybrid_bus_twin::HvacState>* hvac_ = nullptr;  // the hvac runs (hvac:=on) only
   cosim::Output command_pub_, engine_pub_;
   hybrid_bus_twin::DriverDemand last_demand_;
   double ambient_T_K_ = 298.15, ambient_p_Pa_ = units::kStandardAtmosphere_Pa;

@@ -96,6 +96,7 @@ void VehicleParticipant::buildMission(const VehicleParams& p, const std::string&
 void VehicleParticipant::declareTopics() {
   engine_ = &addInputFrom<hybrid_bus_twin::EngineState>("engine", "state");
   if (inScenario("cooling")) cooling_ = &addInputFrom<hybrid_bus_twin::CoolingState>("cooling", "state");
+  if (inScenario("hvac")) hvac_ = &addInputFrom<hybrid_bus_twin::HvacState>("hvac", "state");
   const bool hybrid = inScenario("ems");  // the EMS splits the driver's demand
   if (hybrid) {
     ems_ = &addInputFrom<hybrid_bus_twin::EmsCommand>("ems", "command");
@@ -174,6 +175,11 @@ void VehicleParticipant::step(const ros::Time& t, double dt_s) {
     in.has_fan_power = true;
     in.fan_power_W = cooling_->at(t).fan_drive_power_w;  // crank side, incl. clutch slip
   }
+  if (hvac_) {  // A/C compressor on the crank, the HVAC's 24 V load
+    const auto& h = hvac_->at(t);
+    in.hvac_compressor_W = h.compressor_power_w;
+    in.hvac_electric_W = h.electric_power_w;
+  }
   if (ems_) {  // the EMS's split for [t, t + dt]; the e-machine's torque of its step before
     const auto& c = ems_->at(t);
     const auto& m = em_->at(t);
@@ -221,6 +227,7 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
   s.aux_steering_work_j = en.steering_J;
   s.aux_pneumatic_work_j = en.pneumatic_J;
   s.aux_electric_work_j = en.electric_J;
+  s.aux_hvac_work_j = en.hvac_J;
   s.gearbox_drag_loss_j = en.gearbox_drag_J;
   s.converter_loss_j = en.tc_loss_J;
   s.gear_loss_j = en.gear_load_loss_J;

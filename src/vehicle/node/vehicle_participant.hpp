@@ -4,7 +4,9 @@
 //
 // Inputs  (stamped t_k): /engine/state (EngineState: brake torque, torque limits);
 //                        /cooling/state (CoolingState: fan shaft power on the crank) when the
-//                        cooling participant runs (else aux/fan_default_W).
+//                        cooling participant runs (else aux/fan_default_W);
+//                        /hvac/state (HvacState: A/C compressor shaft power on the crank, the
+//                        HVAC's 24 V load via the alternator or the DC/DC) when the hvac runs.
 //                        Hybrid (the EMS runs): /ems/command (EmsCommand: engine
 //                        on/off, friction brake after regeneration) and /emachine/state
 //                        (EMachineState: actual crank torque, live motoring limit).
@@ -24,6 +26,7 @@
 // the diagnostics/ thresholds of config/vehicle.yaml, ../vehicle_warnings.hpp, while the pedal that would close the gap is not saturated);
 // key/values speed, target, error, gear, pedals, distance.
 #pragma once
+#include <hybrid_bus_twin/HvacState.h>
 #include <hybrid_bus_twin/CoolingState.h>
 #include <hybrid_bus_twin/EMachineState.h>
 #include <hybrid_bus_twin/EmsCommand.h>
@@ -65,6 +68,7 @@ class VehicleParticipant : public cosim::Participant {
   mission::MissionProfile profile_;
   cosim::Input<hybrid_bus_twin::EngineState>* engine_ = nullptr;
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;  // the cooling participant runs only
+  cosim::Input<hybrid_bus_twin::HvacState>* hvac_ = nullptr;        // the hvac participant runs only
   cosim::Input<hybrid_bus_twin::EmsCommand>* ems_ = nullptr;         // hybrid (the EMS runs) only
   cosim::Input<hybrid_bus_twin::EMachineState>* em_ = nullptr;       // hybrid (the EMS runs) only
   cosim::Output state_pub_, command_pub_, cooling_pub_, demand_pub_;
