@@ -47,6 +47,14 @@ EmsInputs EmsModel::withLiveLimits(const EmsInputs& in) const {
   return x;
 }
 
+double EmsModel::dischargeShare_W(const EmsInputs& in, double f_T) const {
+  return std::max(0.0, in.discharge_limit_W * f_T * (1.0 - p_.battery.limit_margin) - in.dcdc_power_W);
+}
+
+double EmsModel::chargeShare_W(const EmsInputs& in) const {
+  return std::max(0.0, in.charge_limit_W * (1.0 - p_.battery.limit_margin) + in.dcdc_power_W);
+}
+
 double EmsModel::batteryBound(double T, double P_avail, const EmsInputs& in) const {
   const double w = std::max(0.0, in.engine_speed_rad_s);
   if (T == 0.0 || w <= 0.0) return T;
@@ -131,7 +139,7 @@ const EmsDecision& EmsModel::decide(double dt, const EmsInputs& in) {
                               "engine start failed: the crank stayed below the firing speed (e-machine "
                               "or battery limits too low for stop_start/crank_torque_Nm?)");
       double T = std::min(ss.crank_torque_Nm, std::max(0.0, in.em_max_torque_Nm));
-      if (w > 1.0) T = batteryBound(T, std::max(0.0, in.discharge_limit_W - in.dcdc_power_W), in);
+      if (w > 1.0) T = batteryBound(T, dischargeShare_W(in, 1.0), in);
       d_.engine_torque_request_Nm = 0.0;
       d_.em_torque_request_Nm = std::max(0.0, T);
       d_.engine_on = false;
@@ -163,7 +171,7 @@ void EmsModel::regen(const EmsInputs& in) {
     return;
   }
   const double em_lim = std::max(0.0, -in.em_min_torque_Nm);
-  const double bat_lim = -batteryBound(-em_lim, std::max(0.0, in.charge_limit_W + in.dcdc_power_W), in);
+  const double bat_lim = -batteryBound(-em_lim, chargeShare_W(in), in);
   const double want = in.wheel_brake_demand_Nm / i;
   double T = std::min({em_lim, bat_lim, want});
   // all of it regenerated, or the binding limit (the friction brake takes the rest)
@@ -193,7 +201,7 @@ void EmsModel::ecms(const EmsInputs& in, bool warm, double dt) {
   double f_T = std::clamp((p_.battery.assist_zero_K - in.battery_T_K) /
                           (p_.battery.assist_zero_K - p_.battery.assist_derate_start_K), 0.0, 1.0);
   double hi = std::max(0.0, in.em_max_torque_Nm);
-  const double hi_bat = batteryBound(hi, std::max(0.0, in.discharge_limit_W * f_T - in.dcdc_power_W), in);
+  const double hi_bat = batteryBound(hi, dischargeShare_W(in, f_T), in);
   if (hi_bat < hi) { hi = hi_bat; hi_why = f_T < 1.0 ? Reason::BatteryHot : Reason::BatteryLimit; }
   hi = std::min(hi, Td - in.engine_min_torque_Nm);
   if (!warm) { hi = 0.0; hi_why = Reason::WarmupInhibit; }
@@ -201,7 +209,7 @@ void EmsModel::ecms(const EmsInputs& in, bool warm, double dt) {
   // Lower bound (load-point shift = charging).
   Reason lo_why = Reason::EcmsOptimum;
   double lo = std::min(0.0, in.em_min_torque_Nm);
-  const double lo_bat = batteryBound(lo, std::max(0.0, in.charge_limit_W + in.dcdc_power_W), in);
+  const double lo_bat = batteryBound(lo, chargeShare_W(in), in);
   if (lo_bat > lo) { lo = lo_bat; lo_why = Reason::BatteryLimit; }
   lo = std::max(lo, Td - in.engine_max_torque_Nm);
   if (in.soc > e.soc_max) { lo = std::max(lo, 0.0); lo_why = Reason::SocHigh; }

@@ -23,7 +23,8 @@
 //    f_T = clamp((T_zero - T_bat)/(T_zero - T_start), 0, 1): assist fades 40 -> 45 °C.
 //    ṁ_f(ω, T) is the controller's engine model (a steady fuel map, FuelModel); the plant may be
 //    the map or the 1D engine.
-//    Battery bounds: the pack's power limits less its other DC load (P_dcdc) are what the
+//    Battery bounds: the pack's power limits less a margin (battery/limit_margin: they move over
+//    the step) and less its other DC load (P_dcdc) are what the
 //    e-machine may draw or return. With an EmLimitModel the bound is the torque whose DC power by
 //    the e-machine's own loss model meets it exactly (bisection, 1e-6 Nm), so the battery is never
 //    asked beyond its limits; without one, the controller's constant efficiencies above.
@@ -147,6 +148,10 @@ class EmsModel {
   /// The crank torque within [0, T_em] (T_em > 0 motoring, < 0 generating) whose DC power stays
   /// within the battery's share P_avail_W >= 0 (drawn when motoring, returned when generating).
   double batteryBound(double T_em_Nm, double P_avail_W, const EmsInputs& in) const;
+  /// The e-machine's share of the pack's discharge (charge) limit [W]: the limit less the margin
+  /// battery/limit_margin, less (plus) the DC/DC's draw; f_T the assist fade.
+  double dischargeShare_W(const EmsInputs& in, double f_T) const;
+  double chargeShare_W(const EmsInputs& in) const;
   void regen(const EmsInputs& in);
   void ecms(const EmsInputs& in, bool warm, double dt_s);
 

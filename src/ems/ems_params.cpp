@@ -26,6 +26,7 @@ void EmsParams::declare(ParamSet& ps) {
   ps.setPrefix("battery/");
   ps.add("assist_derate_start_K", battery.assist_derate_start_K, "K", 273.15, 343.15, "assist reduced from");
   ps.add("assist_zero_K", battery.assist_zero_K, "K", 273.15, 353.15, "no assist from");
+  ps.add("limit_margin", battery.limit_margin, "-", 0.0, 0.2, "share of the pack's limits kept free");
   ps.setPrefix("stop_start/");
   ps.add("enabled", stop_start.enabled, "engine stop at standstill once warm");
   ps.add("soc_min_to_stop", stop_start.soc_min_to_stop, "-", 0.0, 1.0, "no stop below this SOC");

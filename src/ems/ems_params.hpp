@@ -35,6 +35,7 @@ struct WarmupParams {
 struct BatteryLimitParams {
   double assist_derate_start_K = 313.15;  // electric assist reduced from 40 °C ...
   double assist_zero_K = 318.15;          // ... to zero at 45 °C (SPEC §6)
+  double limit_margin = 0.005;            // share of the pack's power limits kept free [-]
 };
 
 struct StopStartParams {

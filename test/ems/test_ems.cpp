@@ -79,7 +79,8 @@ TEST(Ecms, WillansLineGivesBangBangAtTheAnalyticThreshold) {
     const EmsDecision& d = m.step(0.01, in);
     const double s = p.ecms.equivalence_factor;
     if (s / eta < a) {  // boost to the bound: the EM limit (400 Nm) or the battery (30 kW)
-      EXPECT_NEAR(d.em_torque_request_Nm, std::min(400.0, 30000.0 * eta / 150.0), 1e-9) << a;
+      // (the battery's share: its limit less battery/limit_margin)
+      EXPECT_NEAR(d.em_torque_request_Nm, std::min(400.0, 30000.0 * (1.0 - p.battery.limit_margin) * eta / 150.0), 1e-9) << a;
       EXPECT_EQ(d.mode, Mode::Boost);
     } else if (s * p.ecms.em_generator_efficiency > a) {
       EXPECT_LT(d.em_torque_request_Nm, 0.0) << a;
@@ -127,11 +128,11 @@ TEST(Ecms, RegenFirstWithinTheLiveLimitsAndFrictionTakesTheRest) {
   EXPECT_NEAR(d2.em_torque_request_Nm, -120.0, 1e-9);
   EXPECT_NEAR(d2.friction_brake_Nm, 4000.0 - 20.0 * 120.0, 1e-9);
   EXPECT_EQ(d2.reason, Reason::EmLimit);
-  // battery charge limit 9 kW: T = P/(ω η_g)
+  // battery charge limit 9 kW less the margin: T = P (1 - m)/(ω η_g)
   in.em_min_torque_Nm = -400.0;
   in.charge_limit_W = 9000.0;
   const EmsDecision& d3 = m.step(0.01, in);
-  EXPECT_NEAR(d3.em_torque_request_Nm, -9000.0 / (150.0 * p.ecms.em_generator_efficiency), 1e-9);
+  EXPECT_NEAR(d3.em_torque_request_Nm, -9000.0 * (1.0 - p.battery.limit_margin) / (150.0 * p.ecms.em_generator_efficiency), 1e-9);
   EXPECT_EQ(d3.reason, Reason::BatteryLimit);
   // converter open (ratio 0): no regen at all
   in.crank_to_wheel_ratio = 0.0;
@@ -225,7 +226,7 @@ TEST(Ecms, BatteryTemperatureFadesAssistLinearly) {
   EmsModel m(p, fuel);
   EmsInputs in = warmTraction(800.0, 150.0);
   in.em_max_torque_Nm = 1000.0;  // battery-bound
-  const double full = in.discharge_limit_W * p.ecms.em_motor_efficiency / 150.0;
+  const double full = in.discharge_limit_W * (1.0 - p.battery.limit_margin) * p.ecms.em_motor_efficiency / 150.0;
   in.battery_T_K = 0.5 * (p.battery.assist_derate_start_K + p.battery.assist_zero_K);
   EXPECT_NEAR(m.step(0.01, in).em_torque_request_Nm, 0.5 * full, 1e-9);
   EXPECT_EQ(m.decision().reason, Reason::BatteryHot);
