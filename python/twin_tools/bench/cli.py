@@ -20,7 +20,7 @@
                                     with the same Gauss-Seidel torque chain [[vehicle,
                                     aftertreatment, cooling], [engine]] as the hybrid's, so both see
                                     the engine torque without delay); the study table
-                                    (docs/bench/hybrid_study.md) with its checks (every stop served,
+                                    (docs/bench/hybrid_study[_hvac-X].md) with its checks (every stop served,
                                     every hybrid restarted its engine and asked nothing beyond the
                                     e-machine's and battery's limits: exit 1 otherwise), and one
                                     table per engine and temperature (SOC-corrected saving:
@@ -368,7 +368,8 @@ def bench_hybrid(a):
     study = [head, ""] + study_table(results, engines, hvacs) + [
         "", "Checks:", ""] + ["- %s %s" % ("ok:" if ok else "FAILED:", what) for what, ok in checks] + [""]
     print("\n".join(study))
-    a.measurement.write("hybrid_study", "Baseline against 48 V P1 hybrid: the study", study, bool(a.until))
+    tag = "".join("_hvac-" + h for h in hvacs if h)  # one file per HVAC selection
+    a.measurement.write("hybrid_study" + tag, "Baseline against 48 V P1 hybrid: the study", study, bool(a.until))
     table = {}
     for engine in engines:
         lines = [head, ""]
@@ -385,9 +386,9 @@ def bench_hybrid(a):
                 wall = lambda s: ("%.4f" % (s["wall_time_s"] / s["sim_time_s"])) if s else "-"
                 lines += ["| wall/sim | %s | %s |" % (wall(bs), wall(hs)), ""]
         print("\n".join(lines))
-        a.measurement.write("hybrid_%s" % engine, "Baseline against 48 V P1 hybrid at 0, 25 and 40 °C, %s engine" % engine,
+        a.measurement.write("hybrid_%s%s" % (engine, tag), "Baseline against 48 V P1 hybrid at 0, 25 and 40 °C, %s engine" % engine,
                             lines, bool(a.until))
-    with open(os.path.join(REPO, "results", "bench", "hybrid.json"), "w") as f:
+    with open(os.path.join(REPO, "results", "bench", "hybrid%s.json" % tag), "w") as f:
         json.dump(table, f, indent=2)
     return 0 if all(s for _, s in results.values()) and all(ok for _, ok in checks) else 1
 
