@@ -337,8 +337,9 @@ def bench_hybrid(a):
                     args = ["mode:=nodelets", "ambient:=%d" % amb, "engine:=" + engine, "timeout:=10"]
                     if hvac:
                         args.append("hvac:=" + hvac)
-                    if scen == "baseline_urban":
-                        args.append("order:=[[vehicle, aftertreatment, cooling], [engine]]")
+                    if scen == "baseline_urban":  # the hybrid's first group (urban.launch hy_order)
+                        args.append("order:=[[vehicle, aftertreatment, cooling%s], [engine]]" % (
+                            "" if hvac == "off" else ", hvac"))
                     if a.until:
                         args.append("until:=%g" % a.until)
                     jobs.append(((engine, amb, hvac, scen), out, args))

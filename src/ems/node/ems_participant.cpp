@@ -34,6 +34,7 @@ void EmsParticipant::configure() {
   ambient_p_Pa_ = cosim::scenarioAmbientPressure_Pa(nh_);
 
   demand_ = &addInputFrom<hybrid_bus_twin::DriverDemand>("vehicle", "driver_demand");
+  vehicle_ = &addInputFrom<hybrid_bus_twin::VehicleState>("vehicle", "state");
   em_ = &addInputFrom<hybrid_bus_twin::EMachineState>("emachine", "state");
   battery_ = &addInputFrom<hybrid_bus_twin::BatteryState>("battery", "state");
   if (inScenario("cooling")) cooling_ = &addInputFrom<hybrid_bus_twin::CoolingState>("cooling", "state");
@@ -74,7 +75,7 @@ void EmsParticipant::step(const ros::Time& t, double dt_s) {
   in.em_winding_T_K = m.winding_temperature_k;
   in.em_magnet_T_K = m.magnet_temperature_k;
   in.dc_voltage_V = b.terminal_voltage_v;
-  in.dcdc_power_W = b.dcdc_power_w;
+  in.dcdc_power_W = vehicle_->at(t).dcdc_power_w;  // the DC/DC's draw the battery adds this step
   in.soc = b.soc;
   in.battery_T_K = b.cell_temperature_k;
   in.discharge_limit_W = b.discharge_power_limit_w;

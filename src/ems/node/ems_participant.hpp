@@ -4,7 +4,8 @@
 //
 // Sits in the second Gauss-Seidel group (vehicle -> EMS -> engine, e-machine -> battery):
 // Inputs: /vehicle/driver_demand (DriverDemand, fresh: stamped t_k + P, the demand for the next
-//         step), /emachine/state (temperatures for the live torque limits), /battery/state
+//         step), /vehicle/state (the DC/DC's draw of this step, which the battery adds to the
+//         e-machine's), /emachine/state (temperatures for the live torque limits), /battery/state
 //         (SOC, T, power limits, terminal voltage),
 //         /cooling/state (HT coolant) and /aftertreatment/state (SCR brick) when those
 //         participants run (else the engine and ATS count as warm); /hvac/state
@@ -24,6 +25,7 @@
 #include <hybrid_bus_twin/CoolingState.h>
 #include <hybrid_bus_twin/DriverDemand.h>
 #include <hybrid_bus_twin/EMachineState.h>
+#include <hybrid_bus_twin/VehicleState.h>
 
 #include <memory>
 
@@ -76,6 +78,7 @@ class EmsParticipant : public cosim::Participant {
   std::unique_ptr<MachineLimitModel> em_limits_;
   std::unique_ptr<EmsModel> model_;
   cosim::Input<hybrid_bus_twin::DriverDemand>* demand_ = nullptr;
+  cosim::Input<hybrid_bus_twin::VehicleState>* vehicle_ = nullptr;
   cosim::Input<hybrid_bus_twin::EMachineState>* em_ = nullptr;
   cosim::Input<hybrid_bus_twin::BatteryState>* battery_ = nullptr;
   cosim::Input<hybrid_bus_twin::CoolingState>* cooling_ = nullptr;
