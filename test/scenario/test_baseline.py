@@ -60,7 +60,8 @@ class Baseline(unittest.TestCase):
     def test_modes_and_repeats_bit_identical(self):
         bags = {n: run_util.bag_messages(os.path.join(o, "run.bag")) for n, (o, _) in self.runs.items()}
         n_steps = int(round(UNTIL / 0.01)) + 1
-        self.assertEqual(len(bags["nodes"]), 8 * n_steps, "8 topics at every stamp incl. t=0")
+        self.assertEqual({m[0] for m in bags["nodes"]}, set(run_util.BASELINE_TOPICS))
+        self.assertEqual(len(bags["nodes"]), len(run_util.BASELINE_TOPICS) * n_steps, "every topic at every stamp incl. t=0")
         self.assertEqual(bags["nodes"], bags["nodes2"])
         self.assertEqual(bags["nodes"], bags["nodelets"])
 
@@ -181,7 +182,7 @@ class Baseline(unittest.TestCase):
         for k, v in L.items():
             self.assertTrue(math.isfinite(v), k)
         # driveline balance recomputed here from the terms (independent of the vehicle's residual)
-        sinks = sum(L[k] for k in ("aux_steering", "aux_pneumatic", "aux_electric", "fan",
+        sinks = sum(L[k] for k in ("aux_steering", "aux_pneumatic", "aux_electric", "aux_hvac", "fan",
                                    "gearbox_drag", "converter", "gear_load", "retarder", "axle",
                                    "shift", "rolling", "aero", "grade", "friction_brakes",
                                    "kinetic_change"))
@@ -189,7 +190,7 @@ class Baseline(unittest.TestCase):
         self.assertLess(abs(L["crank_engine"] + L["crank_em"] - sinks), 1e-3 * L["crank_engine"])
         self.assertLess(s["energy_ledger_closure"], 1e-3)
         # aux consumers add up to the aux work the vehicle booked
-        self.assertAlmostEqual(L["aux_steering"] + L["aux_pneumatic"] + L["aux_electric"] + L["fan"],
+        self.assertAlmostEqual(L["aux_steering"] + L["aux_pneumatic"] + L["aux_electric"] + L["aux_hvac"] + L["fan"],
                                L["aux_total"], delta=1e-9 + 1e-9 * L["aux_total"])
         # fuel: the engine's coolant heat and brake work are each a part of the fuel energy
         self.assertGreater(L["engine_heat_to_coolant"], 0.0)
@@ -334,7 +335,7 @@ class Failures(unittest.TestCase):
         vehicle then engine (Gauss-Seidel): the run completes, recorded every 10 ms."""
         cfg = self.config_copy("engine_map.yaml", lambda t: t + "\ncosim:\n  macro_step_s: 0.02\n")
         out = os.path.join(self.tmp, "mr")
-        st = run_util.run_launch(LAUNCH, out, until=5.0, config=cfg, order="[[vehicle], [engine], [aftertreatment, cooling]]",
+        st = run_util.run_launch(LAUNCH, out, until=5.0, config=cfg, order="[[vehicle], [engine], [aftertreatment, cooling, hvac]]",
                                  record_period=0.01)
         self.assertEqual(st["status"], "ok", st)
         self.assertEqual(st["steps"], 500)

@@ -25,8 +25,21 @@ POSTPROCESS = ["-m", "twin_tools.report.postprocess"]
 UNTIL = 60.0
 GRACE_S = 30.0
 NS = 10**9
-# participant -> its macro step [s] (config/*.yaml cosim/macro_step_s; the recorder: record_period 0)
-PARTICIPANTS = {"vehicle": 0.01, "engine": 0.01, "aftertreatment": 0.1, "cooling": 0.1, "recorder": 0.01}
+BASE_STEP_S = 0.01  # the stepper's base step [s] (launch/include/urban.launch arg step); a participant without cosim/macro_step_s steps at it
+BASELINE_PARTICIPANTS = ("vehicle", "engine", "aftertreatment", "cooling", "hvac")  # conventional, thermal, hvac:=on
+CONFIG_FILE = {"engine": "engine_map.yaml"}  # participant -> its config file where it is not <name>.yaml
+
+
+def macro_step_s(name):
+    """The participant's macro step [s] from its shipped config (cosim/macro_step_s)."""
+    import yaml
+    with open(os.path.join(REPO, "config", CONFIG_FILE.get(name, name + ".yaml"))) as f:
+        doc = yaml.safe_load(f) or {}
+    return float((doc.get("cosim") or {}).get("macro_step_s", BASE_STEP_S))
+
+
+# participant -> its macro step [s]; the recorder steps at the base step (record_period 0)
+PARTICIPANTS = dict({n: macro_step_s(n) for n in BASELINE_PARTICIPANTS}, recorder=BASE_STEP_S)
 
 
 def read_statuses(bag):
@@ -109,7 +122,8 @@ class Diagnostics(unittest.TestCase):
         a = run_util.bag_messages(os.path.join(self.runs["nodelets"][0], "run.bag"))
         b = run_util.bag_messages(os.path.join(self.runs["nodes"][0], "run.bag"))
         self.assertNotIn("/diagnostics", {topic for topic, _, _ in a})
-        self.assertEqual(len(a), 8 * (int(round(UNTIL / 0.01)) + 1))
+        self.assertEqual({topic for topic, _, _ in a}, set(run_util.BASELINE_TOPICS))
+        self.assertEqual(len(a), len(run_util.BASELINE_TOPICS) * (int(round(UNTIL / BASE_STEP_S)) + 1))
         self.assertEqual(a, b)
 
     def warning_first_time_from_states(self, out):

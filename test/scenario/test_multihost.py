@@ -165,7 +165,9 @@ class MultiHost(unittest.TestCase):
     def test_bag_bit_identical(self):
         a = [m for m in run_util.bag_messages(os.path.join(self.one, "run.bag")) if m[0] != "/twin/run_info"]
         b = [m for m in run_util.bag_messages(os.path.join(self.two, "run.bag")) if m[0] != "/twin/run_info"]
-        self.assertEqual(len(a), 8 * (int(UNTIL) * 10 + 1))  # 8 topics every 0.1 s incl. t = 0
+        # every topic every 0.1 s incl. t = 0
+        self.assertEqual({m[0] for m in a}, set(run_util.BASELINE_TOPICS))
+        self.assertEqual(len(a), len(run_util.BASELINE_TOPICS) * (int(UNTIL) * 10 + 1))
         self.assertEqual(a, b)
 
     def test_summary_identical(self):
@@ -193,7 +195,7 @@ class MultiHost(unittest.TestCase):
         for p in self.procs_one:
             wildcard = [a for a in p["listen"] if not a.startswith("127.")]
             if p["comm"] in ("nodelet", "stepper", "recorder", "vehicle_node", "engine_node",
-                             "aftertreatment_", "cooling_node", "rosout"):
+                             "aftertreatment_", "cooling_node", "hvac_node", "rosout"):
                 self.assertLessEqual(len(wildcard), 1, p)  # the XML-RPC slave server
                 self.assertTrue(any(a.startswith("127.0.0.1:") for a in p["listen"]), p)  # TCPROS
             else:  # python: roslaunch, rosmaster, the scripts; nothing beyond loopback

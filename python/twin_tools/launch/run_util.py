@@ -11,6 +11,11 @@ from twin_tools.launch import ports
 # topics (twin_tools.wiring: the participants' topics.yaml)
 ENGINE_STATE = wiring.topic("engine", "state")
 VEHICLE_ENGINE_COMMAND = wiring.topic("vehicle", "engine_command")
+# The topics a baseline_urban run records at every stamp (conventional, thermal, hvac:=on).
+BASELINE_TOPICS = tuple(wiring.topic(p, k) for p, k in (
+    ("vehicle", "state"), ("vehicle", "engine_command"), ("vehicle", "to_cooling"),
+    ("engine", "state"), ("engine", "exhaust"), ("engine", "heat"),
+    ("aftertreatment", "state"), ("cooling", "state"), ("hvac", "state")))
 
 
 def start_launch(launch_file, out_dir, env=None, **args):
@@ -123,8 +128,8 @@ def pid_of_node(proc, name, timeout_s=30.0):
     raise RuntimeError("node %s not found" % name)
 
 
-CHAINS = ("[[vehicle], [engine], [aftertreatment, cooling]]",
-          "[[vehicle], [engine], [aftertreatment], [cooling]]")
+CHAINS = ("[[vehicle], [engine], [aftertreatment, cooling, hvac]]",
+          "[[vehicle], [engine], [aftertreatment], [cooling, hvac]]")
 
 
 def chain_length_check(launch_file, tmp, until, **args):
