@@ -92,6 +92,13 @@ bool nanDue(double dt_s) {
 #define HBT_RETURN void
 #define HBT_RETURNS_VOID 1
 #define HBT_FAULT_FIELD(m) const_cast<hbt::cooling::CoolingOutputs&>(m->outputs()).coolant_ht_T_K
+#elif defined(HBT_FAULT_PARTICIPANT_hvac)
+#include "hvac/hvac_model.hpp"
+#define HBT_MODEL hbt::hvac::HvacModel
+#define HBT_INPUTS hbt::hvac::HvacInputs
+#define HBT_RETURN void
+#define HBT_RETURNS_VOID 1
+#define HBT_FAULT_FIELD(m) const_cast<hbt::hvac::HvacOutputs&>(m->outputs()).cabin_T_K
 #elif defined(HBT_FAULT_PARTICIPANT_emachine)
 #include "emachine/emachine_model.hpp"
 #define HBT_MODEL hbt::emachine::EMachineModel

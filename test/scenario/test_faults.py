@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Fault injection, every participant: hybrid_urban in nodes mode (one process each), each of the
-seven participants and the recorder killed (SIGKILL) and hung (SIGSTOP) once it is stepping, and
+participants (twin_tools.wiring) and the recorder killed (SIGKILL) and hung (SIGSTOP) once it is stepping, and
 the stepper killed and hung. The run stops within 2 s of the kill (the step timeout, 1 s) or at the timeout
 of the hang, status.json "error" names the node (as one that did not answer: "node died or hung"),
 and run.bag is closed and readable (the recorder killed: cut short, readable after
@@ -19,11 +19,12 @@ import time
 import unittest
 from concurrent.futures import ThreadPoolExecutor
 
+from twin_tools import wiring
 from twin_tools.launch import lost_status, run_util
 from twin_tools.paths import REPO
 
 LAUNCH = os.path.join(REPO, "launch", "hybrid_urban.launch")
-PARTICIPANTS = ("vehicle", "engine", "aftertreatment", "cooling", "ems", "emachine", "battery", "recorder")
+PARTICIPANTS = wiring.participants() + ("recorder",)  # every participant of hybrid_urban, and the recorder
 TIMEOUT_S = 1.0
 MODEL_FAULT_AT_S = 3.0  # [s] simulated: when a model's step fails
 MODEL_FAULT_JOBS = 4    # runs at a time
@@ -31,7 +32,8 @@ DEVEL_LIB = os.path.join(REPO, "build", "devel", "lib")  # scripts/twin builds i
 FAULT_NODELETS = os.path.join(REPO, "build", "fault_lib", "libhbt_nodelets.so")
 # what each participant's NaN shows as: its output topic and field (test/faults/fault_hooks.cpp)
 NAN_OUTPUT = {"battery": "/battery/state: soc = nan", "aftertreatment": "/aftertreatment/state: outlet_temperature_k = nan",
-              "cooling": "/cooling/state: coolant_ht_temperature_k = nan", "emachine": "/emachine/state: torque_nm = nan",
+              "cooling": "/cooling/state: coolant_ht_temperature_k = nan",
+              "hvac": "/hvac/state: cabin_temperature_k = nan", "emachine": "/emachine/state: torque_nm = nan",
               "ems": ": engine_torque_request_nm = nan", "vehicle": ": engine_speed_rad_s = nan",
               "engine": "/engine/state: fuel_mass_flow_kg_s = nan"}
 
