@@ -26,7 +26,8 @@ UNTIL = 60.0
 GRACE_S = 30.0
 NS = 10**9
 BASE_STEP_S = 0.01  # the stepper's base step [s] (launch/include/urban.launch arg step); a participant without cosim/macro_step_s steps at it
-BASELINE_PARTICIPANTS = ("vehicle", "engine", "aftertreatment", "cooling", "hvac")  # conventional, thermal, hvac:=on
+# the participants that publish the baseline's topics (conventional, thermal, hvac:=on)
+BASELINE_PARTICIPANTS = sorted({t.split("/")[1] for t in run_util.BASELINE_TOPICS})
 CONFIG_FILE = {"engine": "engine_map.yaml"}  # participant -> its config file where it is not <name>.yaml
 
 
