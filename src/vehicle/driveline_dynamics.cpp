@@ -19,7 +19,6 @@ double VehicleModel::gearboxInputSpeed(double v, double w) const {
 
 VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, int dir) const {
   Rates r;
-  const double w_half = 0.5 * p_.driveline.idle_speed_rad_s;
   const double w_out = v * axle_ratio_per_radius_1_m_;
   const int g = gear_state_.gear;
   // Gear load loss at the input speed referred to the engaged (or on-coming) gear.
@@ -28,7 +27,9 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
   // driving one (the gas of an expanding cylinder of the crank-resolved 1D engine) as it is
   r.T_eng = c.engine_on || c.T_e > 0.0 ? c.T_e : -std::fabs(c.T_e) * smoothSign(w);
   r.T_em = c.T_em;
-  const double wa = std::max(std::fabs(w), w_half);
+  // below idle the belt-driven set's torque falls linearly to zero at rest (its power with the
+  // speed squared): no consumer draws more torque during a crank or a run-up than at idle
+  const double wa = std::max(std::fabs(w), p_.driveline.idle_speed_rad_s);
   r.T_aux = c.P_aux * w / (wa * wa);
   // Gearbox drag: with a gear engaged, the drag part of the loss map at the gearbox input speed
   // (VECTO: the map applies at the gearbox input; in 1C that is the turbine, so the drag acts on

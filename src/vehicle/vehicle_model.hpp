@@ -5,7 +5,7 @@
 // Bodies: crank (J_E = engine + TC pump inertia, speed ω_e), gearbox input (J_GI = turbine +
 // input shaft, speed ω_in), vehicle (M = m + Σ J_wheel/r², speed v). k_g = i_g i_a / r [1/m].
 // Torques at the crank: engine brake torque T_e (input, from the engine one exchange late),
-// e-machine T_em (input), aux T_aux = P_aux ω_e/max(ω_e, ω_idle/2)², gearbox drag T_d: the
+// e-machine T_em (input), aux T_aux = P_aux ω_e/max(ω_e, ω_idle)², gearbox drag T_d: the
 // loss map's drag L(ω, 0) at the crank when locked/shifting, on the turbine side at ω_t in 1C
 // (T_d,in), and only the neutral spin loss T_N (neutral_drag_torque_Nm) at ω_e in neutral.
 // Gearbox load loss T_gl at ω_in, retarder T_r and axle loss T_ax = (1-η_a)|T_axle,in| at the

@@ -184,6 +184,37 @@ TEST(VehicleDynamics, AuxWorkSplitsExactlyOverConsumers) {
   EXPECT_NEAR(e.fan_J + e.steering_J + e.pneumatic_J + e.electric_J, e.aux_J, 1e-9 * e.aux_J);
 }
 
+TEST(VehicleDynamics, AuxTorqueBelowIdleNeverExceedsItsIdleTorque) {
+  // Engine off in neutral, no drag: the crank spins down from idle under the aux set alone.
+  // The deceleration J dω/dt is the aux torque; at every speed below idle it stays at or below
+  // the idle torque P_aux/ω_idle (belt loads are sized at idle: a crank or a run-up never meets
+  // more).
+  VehicleParams p;
+  p.driveline.neutral_drag_torque_Nm = 0.0;
+  VehicleModel vm(p);
+  const double w_idle = p.driveline.idle_speed_rad_s, dt = 0.001;
+  vm.reset(0.0, 0, w_idle);
+  VehicleInputs in;
+  in.neutral_request = true;
+  in.driver_enabled = false;
+  in.engine_on = false;
+  vm.step(dt, in);
+  const double P_aux = vm.outputs().aux_power_W;
+  ASSERT_GT(P_aux, 0.0);
+  const auto& d = p.driveline;
+  const double J = d.engine_inertia_kg_m2 + d.tc_pump_inertia_kg_m2 + d.gearbox_input_inertia_kg_m2;
+  double w_prev = vm.outputs().engine_speed_rad_s, worst_ratio = 0.0;
+  for (int k = 0; k < 20000 && w_prev > 0.05 * w_idle; ++k) {
+    vm.step(dt, in);
+    const double w = vm.outputs().engine_speed_rad_s;
+    worst_ratio = std::max(worst_ratio, J * (w_prev - w) / dt / (P_aux / w_idle));
+    w_prev = w;
+  }
+  EXPECT_LT(w_prev, 0.5 * w_idle);  // it did spin down through the crank speeds
+  EXPECT_GT(worst_ratio, 0.9);      // near idle the full idle torque acts
+  EXPECT_LE(worst_ratio, 1.0 + 1e-6);
+}
+
 TEST(VehicleDynamics, ShiftSlipPhaseIsSmoothAndDissipative) {
   VehicleParams p = noRetarder();
   VehicleModel vm(p);

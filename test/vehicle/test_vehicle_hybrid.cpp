@@ -140,14 +140,14 @@ TEST(VehicleHybrid, StopStartDebtOfCrankDrivenConsumersIsRepaidExactly) {
   in.engine_on = true;
   for (int k = 0; k < 3000; ++k) {
     const auto& o = vm.outputs();
-    const double wc = std::max(o.engine_speed_rad_s, 0.5 * w);
+    const double wc = std::max(o.engine_speed_rad_s, w);
     in.engine_torque_Nm = o.aux_power_W * o.engine_speed_rad_s / (wc * wc) + 20.0 * (w - o.engine_speed_rad_s);
     vm.step(dt, in);
   }
   const auto& e = vm.outputs().energy;
   EXPECT_NEAR(vm.outputs().engine_speed_rad_s, w, 0.01 * w);
   EXPECT_EQ(e.aux_deferred_J, 0.0);
-  // the spin-up (below ω_idle/2 the consumers' torque is reduced; the payback then lasts a
+  // the spin-up (below ω_idle the consumers' torque falls with the speed; the payback then lasts a
   // little longer, which the 30 s cover): total = 40 s of nominal power
   EXPECT_NEAR(e.steering_J + e.pneumatic_J, P_def * 40.0, 0.01 * P_def * 40.0);
   EXPECT_NEAR(e.steering_J + e.pneumatic_J, e.aux_J, 1e-9 * e.aux_J);
