@@ -179,6 +179,8 @@ ScatteredLinearMap::ScatteredLinearMap(std::vector<double> x, std::vector<double
       throw InputError(source, "points", "duplicate point " + std::to_string(i + 1));
   }
   triangulate(source);
+  buildCellIndex();
+  buildOuterIndex();
 }
 
 void ScatteredLinearMap::triangulate(const std::string& source) {
@@ -226,32 +228,120 @@ std::array<double, 3> ScatteredLinearMap::bary(std::size_t k, double qu, double 
 }
 
 bool ScatteredLinearMap::inside(double x, double y) const {
-  const double qu = u(x), qv = v(y);
-  for (std::size_t k = 0; k < tri_.size(); ++k) {
-    const auto l = bary(k, qu, qv);
-    if (l[0] >= -1e-12 && l[1] >= -1e-12 && l[2] >= -1e-12) return true;
-  }
-  return false;
+  return containingTriangle(u(x), v(y)) >= 0;
 }
 
-double ScatteredLinearMap::operator()(double x, double y) const {
-  const double qu = u(x), qv = v(y);
-  std::size_t best = 0;
-  double bestDist = std::numeric_limits<double>::infinity();
+void ScatteredLinearMap::buildCellIndex() {
+  const int g = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(tri_.size())))));
+  inner_.lo = 0.0;
+  inner_.width = 1.0 / g;
+  inner_.cells = g;
+  inner_.start.assign(static_cast<std::size_t>(g) * g + 1, 0);
+  // each triangle's bounding box, widened by kCellMargin, as a range of cells
+  std::vector<std::array<int, 4>> span(tri_.size());
   for (std::size_t k = 0; k < tri_.size(); ++k) {
-    const auto l = bary(k, qu, qv);
-    if (l[0] >= -1e-12 && l[1] >= -1e-12 && l[2] >= -1e-12)
-      return l[0] * z_[tri_[k][0]] + l[1] * z_[tri_[k][1]] + l[2] * z_[tri_[k][2]];
+    const auto b = boundingBox(k);
+    span[k] = {inner_.cellOf(b[0] - kCellMargin), inner_.cellOf(b[1] + kCellMargin),
+               inner_.cellOf(b[2] - kCellMargin), inner_.cellOf(b[3] + kCellMargin)};
+  }
+  const auto touches = [&](std::size_t k, int i, int j) {
+    return i >= span[k][0] && i <= span[k][1] && j >= span[k][2] && j <= span[k][3];
+  };
+  inner_.fill(tri_.size(), touches);
+}
+
+void ScatteredLinearMap::buildOuterIndex() {
+  // For a cell B: every point of B is within D = min over the vertices m of (max over B's corners
+  // of |corner - m|) of some triangle (the one holding m), and at least d_k = the distance between
+  // B and k's bounding box from triangle k. The nearest triangle of any point in B is therefore
+  // among the k with d_k <= D (a small relative margin keeps rounding ties in).
+  const int g = 2 * inner_.cells;
+  outer_.lo = -kOuterReach;
+  outer_.width = (1.0 + 2.0 * kOuterReach) / g;
+  outer_.cells = g;
+  outer_.start.assign(static_cast<std::size_t>(g) * g + 1, 0);
+  std::vector<std::array<double, 4>> box(tri_.size());
+  for (std::size_t k = 0; k < tri_.size(); ++k) box[k] = boundingBox(k);
+  std::vector<double> bound2(static_cast<std::size_t>(g) * g);
+  for (int j = 0; j < g; ++j)
+    for (int i = 0; i < g; ++i) {
+      const double u0 = outer_.lo + i * outer_.width, u1 = u0 + outer_.width;
+      const double v0 = outer_.lo + j * outer_.width, v1 = v0 + outer_.width;
+      double best = std::numeric_limits<double>::infinity();
+      for (const auto& t : tri_)
+        for (int m : t) {
+          double far2 = 0.0;  // the farthest point of B from vertex m is a corner (convexity)
+          for (const double cu : {u0, u1})
+            for (const double cv : {v0, v1})
+              far2 = std::max(far2, (pu_[m] - cu) * (pu_[m] - cu) + (pv_[m] - cv) * (pv_[m] - cv));
+          best = std::min(best, far2);
+        }
+      bound2[static_cast<std::size_t>(j) * g + i] = best * (1.0 + 1e-9) + 1e-18;
+    }
+  const auto candidate = [&](std::size_t k, int i, int j) {
+    const double u0 = outer_.lo + i * outer_.width, u1 = u0 + outer_.width;
+    const double v0 = outer_.lo + j * outer_.width, v1 = v0 + outer_.width;
+    const double du = std::max({0.0, box[k][0] - u1, u0 - box[k][1]});
+    const double dv = std::max({0.0, box[k][2] - v1, v0 - box[k][3]});
+    return du * du + dv * dv <= bound2[static_cast<std::size_t>(j) * g + i];
+  };
+  outer_.fill(tri_.size(), candidate);
+}
+
+std::array<double, 4> ScatteredLinearMap::boundingBox(std::size_t k) const {
+  double umin = pu_[tri_[k][0]], umax = umin, vmin = pv_[tri_[k][0]], vmax = vmin;
+  for (int i : tri_[k]) {
+    umin = std::min(umin, pu_[i]); umax = std::max(umax, pu_[i]);
+    vmin = std::min(vmin, pv_[i]); vmax = std::max(vmax, pv_[i]);
+  }
+  return {umin, umax, vmin, vmax};
+}
+
+template <class Member>
+void ScatteredLinearMap::CellIndex::fill(std::size_t n_tri, const Member& member) {
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      const std::size_t c = static_cast<std::size_t>(j) * cells + i;
+      for (std::size_t k = 0; k < n_tri; ++k)
+        if (member(k, i, j)) tris.push_back(static_cast<int>(k));
+      start[c + 1] = static_cast<int>(tris.size());
+    }
+}
+
+int ScatteredLinearMap::containingTriangle(double qu, double qv) const {
+  const int c = inner_.cellIndex(qu, qv, kCellMargin);
+  if (c < 0) return -1;  // outside the unit square: outside every triangle
+  for (int m = inner_.start[c]; m < inner_.start[c + 1]; ++m) {
+    const auto l = bary(inner_.tris[m], qu, qv);
+    if (l[0] >= -kBaryTolerance && l[1] >= -kBaryTolerance && l[2] >= -kBaryTolerance) return inner_.tris[m];
+  }
+  return -1;
+}
+
+int ScatteredLinearMap::nearestTriangle(double qu, double qv) const {
+  const P q{qu, qv};
+  const int c = outer_.cellIndex(qu, qv, 0.0);
+  const int m0 = c < 0 ? 0 : outer_.start[c], m1 = c < 0 ? static_cast<int>(tri_.size()) : outer_.start[c + 1];
+  int best = -1;
+  double bestDist = std::numeric_limits<double>::infinity();
+  for (int m = m0; m < m1; ++m) {
+    const int k = c < 0 ? m : outer_.tris[m];  // beyond the outer grid: every triangle
     const auto& t = tri_[k];
-    const P q{qu, qv};
     double d = std::numeric_limits<double>::infinity();
     for (int e = 0; e < 3; ++e)
       d = std::min(d, distToSegment2(q, {pu_[t[e]], pv_[t[e]]},
                                      {pu_[t[(e + 1) % 3]], pv_[t[(e + 1) % 3]]}));
     if (d < bestDist) { bestDist = d; best = k; }
   }
-  const auto l = bary(best, qu, qv);
-  return l[0] * z_[tri_[best][0]] + l[1] * z_[tri_[best][1]] + l[2] * z_[tri_[best][2]];
+  return best;
+}
+
+double ScatteredLinearMap::operator()(double x, double y) const {
+  const double qu = u(x), qv = v(y);
+  int k = containingTriangle(qu, qv);
+  if (k < 0) k = nearestTriangle(qu, qv);  // outside the hull: the plane of the nearest triangle
+  const auto l = bary(k, qu, qv);
+  return l[0] * z_[tri_[k][0]] + l[1] * z_[tri_[k][1]] + l[2] * z_[tri_[k][2]];
 }
 
 double ScatteredLinearMap::totalAreaNormalised() const {

@@ -19,8 +19,19 @@
 // connected set from the triangle containing the new point and pruned until it is star-shaped
 // as seen from that point (robust with the many collinear and co-circular points of gridded
 // VECTO maps). Built once in the constructor (allocates); look-ups do not allocate.
+//
+// Look-up: a uniform grid of about √(triangles) x √(triangles) cells over the unit square lists,
+// per cell, the triangles whose bounding box (widened by a margin far above the barycentric
+// tolerance) touches it, in increasing triangle order. A query tests only its cell's list and
+// takes the first triangle that contains it: the same triangle a scan of all triangles in order
+// finds, so the value is bit-identical to the plain scan, at a few triangles per query instead of
+// all of them. Outside the hull a second grid over [-0.5, 1.5]^2 lists, per cell, the triangles
+// that can be the nearest to some point of the cell (a distance bound), scanned in order with
+// the same strict comparison as a scan of all triangles; farther queries scan all triangles.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -51,12 +62,47 @@ class ScatteredLinearMap {
   double u(double x) const { return (x - x0_) * sx_; }
   double v(double y) const { return (y - y0_) * sy_; }
   void triangulate(const std::string& source);
+  /// Cells of a uniform grid over [lo, lo + cells*width]^2 (normalised coordinates), each with a
+  /// list of triangle indices in increasing order: tris[start[c] .. start[c + 1]).
+  struct CellIndex {
+    double lo = 0.0, width = 1.0;
+    int cells = 1;
+    std::vector<int> start, tris;
+    int cellOf(double c) const { return std::clamp(static_cast<int>(std::floor((c - lo) / width)), 0, cells - 1); }
+    /// Cell of (qu, qv), -1 beyond the grid by more than margin.
+    int cellIndex(double qu, double qv, double margin) const {
+      const double hi = lo + cells * width;
+      if (!(qu >= lo - margin && qu <= hi + margin && qv >= lo - margin && qv <= hi + margin)) return -1;
+      return cellOf(qv) * cells + cellOf(qu);
+    }
+    /// Lists, per cell (i, j), the triangles k with member(k, i, j).
+    template <class Member>
+    void fill(std::size_t n_tri, const Member& member);
+  };
+  /// Triangles by cell of the unit square whose bounding box touches the cell (look-up inside).
+  void buildCellIndex();
+  /// Triangles by cell of [-kOuterReach, 1 + kOuterReach]^2 that can be the nearest to a point of
+  /// the cell (look-up outside the hull).
+  void buildOuterIndex();
+  /// (u_min, u_max, v_min, v_max) of triangle k.
+  std::array<double, 4> boundingBox(std::size_t k) const;
+  /// Index of the first triangle containing (qu, qv) within the barycentric tolerance, -1 if none.
+  int containingTriangle(double qu, double qv) const;
+  /// Index of the first triangle at the least distance from (qu, qv).
+  int nearestTriangle(double qu, double qv) const;
   /// Barycentric coordinates of (pu, pv) in triangle k.
   std::array<double, 3> bary(std::size_t k, double pu, double pv) const;
 
   std::vector<double> x_, y_, z_, pu_, pv_;
   std::vector<std::array<int, 3>> tri_;
   double x0_ = 0.0, y0_ = 0.0, sx_ = 1.0, sy_ = 1.0;
+  CellIndex inner_, outer_;
+  // a point counts as inside a triangle when every barycentric coordinate is >= -this [-]
+  static constexpr double kBaryTolerance = 1e-12;
+  // widening of a triangle's bounding box in the inner index [-] (normalised; >> kBaryTolerance)
+  static constexpr double kCellMargin = 1e-9;
+  // how far beyond the unit square the outer index reaches [-] (normalised; farther: all triangles)
+  static constexpr double kOuterReach = 0.5;
 };
 
 }  // namespace hbt::engine_map
