@@ -13,8 +13,9 @@ class BagError(Exception):
     """An input that is not a readable bag (or lacks what the tool needs); str() is the message."""
 
 
-def open_bag(path):
-    """rosbag.Bag opened for reading; BagError naming path and cause otherwise."""
+def open_bag(path, mode="r"):
+    """rosbag.Bag opened for reading (mode "r") or appending ("a"); BagError naming path and cause
+    otherwise."""
     if not os.path.exists(path):
         raise BagError("%s: no such file" % path)
     if os.path.isdir(path):
@@ -30,7 +31,7 @@ def open_bag(path):
         raise BagError("%s: not a ROS bag (it does not start with '#ROSBAG V2.0')" % path)
     import rosbag
     try:
-        return rosbag.Bag(path)
+        return rosbag.Bag(path, mode)
     except rosbag.ROSBagUnindexedException:
         raise BagError("%s: the bag was cut short (it has no index: the run or the copy was interrupted "
                        "before the bag was closed). `rosbag reindex %s` rebuilds the index from what was "

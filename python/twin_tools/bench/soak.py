@@ -7,10 +7,14 @@ resident memory of its manager (VmRSS of /proc/<pid>/status, [MiB]) is sampled e
 
 Per run: status, wall time, whether a timeout ended it (a participant starved of CPU taken for
 dead: "did not answer", "no participant progressed", "start-up timed out"), whether every number
-of its summary.json is finite, the manager's RSS at the first sample after a fifth of the run's
-wall time and at the last sample before its end, and its peak (VmHWM). Verdict lines: failed runs,
-false timeouts, non-finite summaries, and the RSS of the first and the last mission of each
-scenario (flat: within RSS_FLAT_PCT)."""
+of its summary.json is finite, the manager's RSS and its anonymous part (RssAnon: heap, stacks,
+mapped memory the process itself allocated; RSS adds file-backed pages of the shared libraries,
+which come and go with the page cache) at the first sample after a fifth of the run's wall time
+and at the last sample before its end, and the peak RSS (VmHWM). Verdict lines: failed runs,
+false timeouts, non-finite summaries, and memory growth: within each mission (late - early
+RssAnon) and from the first mission to the last (per scenario, the least-squares line of the late
+RssAnon over the mission index, its rise over the soak). Flat: both within RSS_FLAT_PCT of the
+scenario's mean late RssAnon."""
 import json
 import math
 import os
@@ -25,7 +29,7 @@ from twin_tools.paths import REPO
 
 SOAK_AMBIENTS_C = (0, 10, 25, 32, 40)  # [degC]
 SOAK_PAYLOADS_KG = (500, 3000)         # [kg]: near empty, and about 40 standing passengers
-RSS_FLAT_PCT = 5.0   # [%] last mission's steady RSS against the first's, same scenario
+RSS_FLAT_PCT = 5.0   # [%] allowed memory growth (within a mission; first to last, fitted)
 SAMPLE_PERIOD_S = 1.0  # [s] wall
 TIMEOUT_WORDS = ("did not answer", "no participant progressed", "start-up timed out")
 
@@ -60,17 +64,29 @@ def manager_pid(port):
 
 
 def memory_mib(pid):
-    """(VmRSS, VmHWM) of process pid [MiB], or None once it is gone."""
+    """(VmRSS, RssAnon, VmHWM) of process pid [MiB], or None once it is gone."""
     vals = {}
     try:
         with open("/proc/%d/status" % pid) as f:
             for line in f:
-                if line.startswith(("VmRSS:", "VmHWM:")):
+                if line.startswith(("VmRSS:", "RssAnon:", "VmHWM:")):
                     key, kb = line.split()[:2]
                     vals[key[:-1]] = int(kb) / 1024.0
     except OSError:
         return None
-    return (vals.get("VmRSS"), vals.get("VmHWM")) if "VmRSS" in vals else None
+    return (vals.get("VmRSS"), vals.get("RssAnon"), vals.get("VmHWM")) if "VmRSS" in vals else None
+
+
+def fitted_rise(values):
+    """Rise of the least-squares line through values[i] at i = 0..n-1 from the first to the last
+    index (same unit as values), or None for fewer than 2 values."""
+    n = len(values)
+    if n < 2:
+        return None
+    mx, my = (n - 1) / 2.0, sum(values) / n
+    sxx = sum((i - mx) ** 2 for i in range(n))
+    slope = sum((i - mx) * (y - my) for i, y in enumerate(values)) / sxx
+    return slope * (n - 1)
 
 
 def finite_numbers(obj):
@@ -102,8 +118,8 @@ def run_one(index, scenario, ambient, payload, root, until):
                 pid = manager_pid(port)
             m = memory_mib(pid) if pid else None
             if m:
-                samples.append((time.time() - t0, m[0]))
-                peak = max(peak, m[1] or 0.0)
+                samples.append((time.time() - t0, m[0], m[1]))
+                peak = max(peak, m[2] or 0.0)
     wall = time.time() - t0
     os.close(lock)
     row = {"run": os.path.basename(out), "scenario": scenario, "ambient_c": ambient, "payload_kg": payload,
@@ -121,10 +137,34 @@ def run_one(index, scenario, ambient, payload, root, until):
     except (OSError, ValueError):
         row["summary_finite"] = None
     row["timeout"] = any(w in row.get("message", "") for w in TIMEOUT_WORDS)
-    steady = [r for t, r in samples if t >= 0.2 * wall]
-    row["rss_early_mib"] = steady[0] if steady else None
-    row["rss_late_mib"] = steady[-1] if steady else None
+    steady = [(rss, anon) for t, rss, anon in samples if t >= 0.2 * wall]
+    row["rss_early_mib"], row["anon_early_mib"] = steady[0] if steady else (None, None)
+    row["rss_late_mib"], row["anon_late_mib"] = steady[-1] if steady else (None, None)
     return row
+
+
+def memory_verdict(rows):
+    """(verdict lines, flat) of the runs' memory: per scenario, the largest rise of RssAnon within a
+    mission and the fitted rise of the late RssAnon from the first mission to the last, both
+    against RSS_FLAT_PCT of the scenario's mean late RssAnon."""
+    lines, flat = [], True
+    for scenario in ("baseline_urban", "hybrid_urban"):
+        mine = [r for r in rows if r["scenario"] == scenario and r.get("anon_late_mib") and r.get("anon_early_mib")]
+        if not mine:
+            continue
+        mean = sum(r["anon_late_mib"] for r in mine) / len(mine)
+        within = max(r["anon_late_mib"] - r["anon_early_mib"] for r in mine)
+        rise = fitted_rise([r["anon_late_mib"] for r in mine])
+        ok = 100.0 * within / mean <= RSS_FLAT_PCT and (rise is None or 100.0 * rise / mean <= RSS_FLAT_PCT)
+        flat = flat and ok
+        lines.append("- %s, %d missions: RssAnon late %.1f MiB (mean; %.1f in the first mission, %.1f in the "
+                     "last); largest rise within a mission %+.2f MiB (%+.1f %%); fitted rise from the first "
+                     "mission to the last %s: %s (within %g %% of the mean)" % (
+                         scenario, len(mine), mean, mine[0]["anon_late_mib"], mine[-1]["anon_late_mib"], within,
+                         100.0 * within / mean,
+                         "-" if rise is None else "%+.2f MiB (%+.1f %%)" % (rise, 100.0 * rise / mean),
+                         "flat" if ok else "GROWS", RSS_FLAT_PCT))
+    return lines, flat
 
 
 def bench_soak(a):
@@ -145,17 +185,21 @@ def bench_soak(a):
     fmt = lambda v, f="%.1f": "-" if v is None else f % v
     md = ["Full map-engine missions (%s), both scenarios alternating, ambients %s °C, payloads %s kg; %d at a "
           "time (nodelets), each on its own master. RSS: the nodelet manager's resident memory [MiB] (one "
-          "process: every participant, the stepper, the recorder), at the first sample after a fifth of the run "
-          "and at the last sample; peak = VmHWM. Total wall time %.0f s."
+          "process: every participant, the stepper, the recorder) and its anonymous part RssAnon (what the process "
+          "allocated itself; RSS adds shared-library pages that come and go with the page cache), at the first "
+          "sample after a fifth of the run (early) and at the last sample (late); peak = VmHWM. Total wall time "
+          "%.0f s."
           % ("first %g s" % a.until if a.until else "whole Urban cycle", ", ".join(map(str, SOAK_AMBIENTS_C)),
              ", ".join(map(str, SOAK_PAYLOADS_KG)), jobs, total), "",
-          "| run | status | wall [s] | timeout | summary finite | RSS early [MiB] | RSS late [MiB] | peak [MiB] |",
+          "| run | status | wall [s] | timeout | summary finite | RSS early / late [MiB] | RssAnon early / late "
+          "[MiB] | peak [MiB] |",
           "|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        md.append("| %s | %s | %.0f | %s | %s | %s | %s | %s |" % (
+        md.append("| %s | %s | %.0f | %s | %s | %s / %s | %s / %s | %s |" % (
             r["run"], r["status"], r["wall_s"], "yes" if r["timeout"] else "no",
             {True: "yes", False: "NO", None: "-"}[r["summary_finite"]],
-            fmt(r["rss_early_mib"]), fmt(r["rss_late_mib"]), fmt(r["rss_peak_mib"])))
+            fmt(r["rss_early_mib"]), fmt(r["rss_late_mib"]), fmt(r.get("anon_early_mib")),
+            fmt(r.get("anon_late_mib")), fmt(r["rss_peak_mib"])))
     failed = [r for r in rows if r["status"] != "ok"]
     timeouts = [r for r in rows if r["timeout"]]
     not_finite = [r for r in rows if r["summary_finite"] is not True]
@@ -163,20 +207,8 @@ def bench_soak(a):
         "\n  - %s: %s" % (r["run"], r["message"]) for r in failed)),
         "- runs ended by a timeout: %d" % len(timeouts),
         "- summaries with a non-finite number (or none): %d" % len(not_finite)]
-    growth = [r["rss_late_mib"] - r["rss_early_mib"] for r in rows if r["rss_late_mib"] and r["rss_early_mib"]]
-    if growth:
-        md.append("- within a mission, late - early RSS: %+.1f to %+.1f MiB" % (min(growth), max(growth)))
-    flat = True
-    for scenario in ("baseline_urban", "hybrid_urban"):
-        mine = [r for r in rows if r["scenario"] == scenario and r["rss_late_mib"]]
-        if len(mine) < 2:
-            continue
-        first, last = mine[0], mine[-1]
-        change = 100.0 * (last["rss_late_mib"] / first["rss_late_mib"] - 1.0)
-        flat = flat and abs(change) <= RSS_FLAT_PCT
-        md.append("- %s: RSS late %.1f MiB in the first mission (%s), %.1f MiB in the last (%s): %+.1f %% "
-                  "(flat: within %g %%)" % (scenario, first["rss_late_mib"], first["run"], last["rss_late_mib"],
-                                           last["run"], change, RSS_FLAT_PCT))
+    lines, flat = memory_verdict(rows)
+    md += lines
     print("\n".join(md))
     a.measurement.write("soak", "Soak: %d full missions, %d at a time" % (len(rows), jobs), md,
                         bool(a.until) or a.runs < 20)

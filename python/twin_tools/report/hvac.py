@@ -1,5 +1,5 @@
 """HVAC results of a run (the hvac participant, hvac:=on), from the bag data of
-postprocess.read_bag: summary keys and a plot. Every key is left out when the hvac did not run.
+postprocess.read_run: summary keys and a plot. Every key is left out when the hvac did not run.
 
 Summary keys: hvac_kwh (energy the HVAC's machines drew: A/C compressor shaft + electric load of
 blowers, condenser fans and the heater's burner; the crank-side cost incl. the alternator is the

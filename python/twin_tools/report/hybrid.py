@@ -1,5 +1,5 @@
 """Hybrid results of a run (EMS, e-machine, battery nodes), from the bag data of
-postprocess.read_bag: summary keys, the electric-path balance, the SOC-corrected fuel and plots.
+postprocess.read_run: summary keys, the electric-path balance, the SOC-corrected fuel and plots.
 Every key is left out when the node that owns it did not run.
 
 Summary keys: em_boost_kwh (crank work of the e-machine while motoring), em_brake_kwh (crank work

@@ -40,43 +40,40 @@ RUN_INFO_TOPIC = "/twin/run_info"
 
 
 def store_run_info(bag_path, info):
-    """Appends the run's metadata (dict) to the bag as one std_msgs/String (JSON)."""
-    import rosbag
+    """Appends the run's metadata (dict) to the bag as one std_msgs/String (JSON), stamped at the
+    bag's end."""
     import rospy
     from std_msgs.msg import String
-    with open_bag(bag_path) as bag:  # a bag cut short: BagError saying how to recover it
+    with open_bag(bag_path, "a") as bag:  # a bag cut short: BagError saying how to recover it
         t_end = bag.get_end_time() if bag.get_message_count() else 1e-9
-    with rosbag.Bag(bag_path, "a") as bag:
         bag.write(RUN_INFO_TOPIC, String(data=json.dumps(info, sort_keys=True)), rospy.Time.from_sec(t_end))
 
 
-def read_run_info(bag_path):
-    info = None
-    with open_bag(bag_path) as bag:
-        for _, msg, _ in bag.read_messages(topics=[RUN_INFO_TOPIC]):
-            info = json.loads(msg.data)
-    if info is None:
-        sys.exit("twin: %s has no %s (not written by scripts/twin run, or the run did not end)"
-                 % (bag_path, RUN_INFO_TOPIC))
-    return info
+def numeric_fields(msg):
+    """Names of a message's number fields (bool, int, float): the ones read_run keeps."""
+    return [f for f in msg.__slots__ if isinstance(getattr(msg, f), (bool, int, float))]
 
 
-def read_bag(path):
-    """{topic: {field: np.array}} with 't' = header.stamp [s]; numeric fields only."""
-    data = {}
+def read_run(path):
+    """(run info, data) of a bag in one pass: the run's metadata (/twin/run_info, JSON) and
+    {topic: {field: np.array}} with 't' = header.stamp [s], numeric fields only (bool as 0/1)."""
+    info, data, fields = None, {}, {}
     with open_bag(path) as bag:
         for topic, msg, _ in bag.read_messages():
             if topic == RUN_INFO_TOPIC:
+                info = json.loads(msg.data)
                 continue
-            d = data.setdefault(topic, {"t": []})
+            d = data.get(topic)
+            if d is None:  # the first message of a topic fixes its fields (one type per topic)
+                fields[topic] = numeric_fields(msg)
+                d = data[topic] = {f: [] for f in ["t"] + fields[topic]}
             d["t"].append(msg.header.stamp.to_sec())
-            for f in msg.__slots__:
-                v = getattr(msg, f)
-                if isinstance(v, bool):
-                    v = float(v)
-                if isinstance(v, (int, float)):
-                    d.setdefault(f, []).append(float(v))
-    return {k: {f: np.asarray(v) for f, v in d.items()} for k, d in data.items()}
+            for f in fields[topic]:
+                d[f].append(float(getattr(msg, f)))
+    if info is None:
+        sys.exit("twin: %s has no %s (not written by scripts/twin run, or the run did not end)"
+                 % (path, RUN_INFO_TOPIC))
+    return info, {k: {f: np.asarray(v) for f, v in d.items()} for k, d in data.items()}
 
 
 def cut_after(data, t_s):
@@ -354,9 +351,8 @@ def report_from_bag(bag, out, baseline=None):
     A bag without some of the run's topics, or ending before the run did, is reported for what it
     holds, and says so (summary keys missing_topics, data_until_s, partial)."""
     base = hybrid.read_baseline(baseline) if baseline else None
-    info = read_run_info(bag)
+    info, data = read_run(bag)
     status = info["status"]
-    data = read_bag(bag)
     if status["status"] == INTERRUPTED:
         data = cut_after(data, status["sim_time_s"])
     s = summarise(info["scenario"], info["args"], status, data, info.get("stops_csv", ""),

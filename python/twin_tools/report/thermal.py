@@ -1,5 +1,5 @@
 """Thermal and emission results of a run (cooling and aftertreatment nodes), from the bag data of
-postprocess.read_bag: summary keys and plots. Every key is left out when the node that owns it
+postprocess.read_run: summary keys and plots. Every key is left out when the node that owns it
 did not run (a figure that means nothing for the run is not printed).
 
 Summary keys: fan_kwh (crank-side fan drive energy, signed), pump_kwh (HT pump shaft energy),
