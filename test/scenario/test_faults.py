@@ -7,7 +7,9 @@ and run.bag is closed and readable (the recorder killed: cut short, readable aft
 `rosbag reindex`). The stepper killed: roslaunch stops the run (the stepper is required) and the
 status twin writes then (twin_tools.launch.lost_status) names it and the signal. The stepper
 hung: every participant misses its heartbeat for 2 timeouts; the recorder closes the bag, writes
-the status naming the stepper and ends it.
+the status naming the stepper and ends it. The whole nodelet manager stopped (SIGSTOP; every
+participant, the stepper and the recorder inside it) under `twin run`: its watcher ends the run at
+the timeout, status.json "error" names the manager, and the bag is closed.
 Faults of a model (a step that throws or yields NaN) are tested per model (their ModelDivergence
 and InputError tests) and for the protocol in test/cosim; this test covers the processes."""
 import os
@@ -20,10 +22,11 @@ import unittest
 from concurrent.futures import ThreadPoolExecutor
 
 from twin_tools import wiring
-from twin_tools.launch import lost_status, run_util
+from twin_tools.launch import lost_status, manager_watch, ports, run_util
 from twin_tools.paths import REPO
 
 LAUNCH = os.path.join(REPO, "launch", "hybrid_urban.launch")
+TWIN = os.path.join(REPO, "scripts", "twin")
 PARTICIPANTS = wiring.participants() + ("recorder",)  # every participant of hybrid_urban, and the recorder
 TIMEOUT_S = 1.0
 MODEL_FAULT_AT_S = 3.0  # [s] simulated: when a model's step fails
@@ -217,6 +220,42 @@ class Faults(unittest.TestCase):
         self.assertLess(delay, 2 * TIMEOUT_S + 2.0)
         readable(self, out, "stepper")
         self.table.append(("stepper", "SIGSTOP", st["message"][:90], delay))
+
+    def test_nodelet_manager_stopped(self):
+        # twin run (its watcher lives beside roslaunch), nodelets: SIGSTOP to the manager once the
+        # run is stepping; the run ends at the timeout with the manager named and the bag closed
+        out = os.path.join(self.tmp, "manager_SIGSTOP")
+        port, lock = ports.reserve_port(os.getpid() % 1000)
+        env = dict(os.environ, HBT_SETUP_DONE="1", HBT_ROS_PORT=str(port))
+        proc = subprocess.Popen([TWIN, "run", "hybrid_urban", "--out", out, "timeout:=%g" % TIMEOUT_S], env=env,
+                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            run_util.wait_until_stepping(out, proc, after_s=10.0)
+            pid = manager_watch.manager_pid(port)
+            self.assertIsNotNone(pid, "no nodelet manager on port %d" % port)
+            t_sig = time.time()
+            os.kill(pid, signal.SIGSTOP)
+            marker = os.path.join(out, manager_watch.RECORD)
+            while proc.poll() is None and not os.path.exists(marker):
+                time.sleep(0.05)
+            delay = time.time() - t_sig
+            text = proc.communicate(timeout=120)[0].decode(errors="replace")
+        finally:
+            if proc.poll() is None:
+                os.killpg(proc.pid, signal.SIGKILL)
+            os.close(lock)
+        self.assertNotEqual(proc.returncode, 0, text[-2000:])
+        st = run_util.read_status(out)
+        self.assertEqual(st["status"], "error", st)
+        self.assertRegex(st["message"], r"^the nodelet manager twin_manager \(pid %d\), which holds every participant, "
+                         r"the stepper and the recorder, was stopped from outside \(SIGSTOP: process state T\) for "
+                         r"[0-9.]+ s, the run's timeout \(%g s\).*twin ended the run at t = [0-9.]+ s" % (pid, TIMEOUT_S))
+        self.assertIn("twin: run FAILED: the nodelet manager twin_manager", text)
+        self.assertGreater(st["sim_time_s"], 10.0)
+        self.assertLess(delay, TIMEOUT_S + 1.0)  # noticed at the timeout (polled every 0.1 s)
+        self.assertFalse(os.path.exists(os.path.join(out, "run.bag.active")))
+        readable(self, out, "manager")
+        self.table.append(("nodelet manager", "SIGSTOP", st["message"][:90], delay))
 
 
 if __name__ == "__main__":

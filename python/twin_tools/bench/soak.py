@@ -25,6 +25,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 
 from twin_tools.launch import ports
+from twin_tools.launch.manager_watch import manager_pid
 from twin_tools.paths import REPO
 
 SOAK_AMBIENTS_C = (0, 10, 25, 32, 40)  # [degC]
@@ -41,26 +42,6 @@ def matrix(n_runs):
             for scenario in ("baseline_urban", "hybrid_urban"):
                 runs.append((scenario, ambient, payload))
     return runs[:n_runs]
-
-
-def manager_pid(port):
-    """The pid of the nodelet manager of the run on master port `port`, or None."""
-    for pid in os.listdir("/proc"):
-        if not pid.isdigit():
-            continue
-        try:
-            with open("/proc/%s/cmdline" % pid, "rb") as f:
-                cmd = f.read()
-            if b"__name:=twin_manager" not in cmd:
-                continue
-            with open("/proc/%s/environ" % pid, "rb") as f:
-                env = f.read().split(b"\0")
-        except OSError:
-            continue
-        # roslaunch hands its nodes the master's URI with a trailing slash
-        if any(e.startswith(b"ROS_MASTER_URI=") and e.rstrip(b"/").endswith(b":%d" % port) for e in env):
-            return int(pid)
-    return None
 
 
 def memory_mib(pid):
