@@ -18,7 +18,11 @@ constexpr double kDH_fast = 757.0e3;  // J per fast-SCR event
 constexpr double kDH_no2 = 455.5e3;   // J per mol NO2 (NO2 SCR)
 constexpr double kDH_ox = 316.8e3;    // J per mol NH3 oxidised
 int rhsCallback(realtype, N_Vector y, N_Vector yd, void* ud) {
-  static_cast<const ScrStorage*>(ud)->rhs(N_VGetArrayPointer(y), N_VGetArrayPointer(yd));
+  static_cast<const ScrStorage*>(ud)->rhs(N_VGetArrayPointer(y), N_VGetArrayPointer(yd), nullptr);
+  return 0;
+}
+int quadCallback(realtype, N_Vector y, N_Vector qd, void* ud) {
+  static_cast<const ScrStorage*>(ud)->rhs(N_VGetArrayPointer(y), nullptr, N_VGetArrayPointer(qd));
   return 0;
 }
 }  // namespace
@@ -27,14 +31,13 @@ ScrStorage::ScrStorage(const ScrKinetics& k, int slices, double Vs, double rtol,
                        int max_steps)
     : k_(k), n_(slices), Vs_(Vs), rtol_(rtol), atol_theta_(atol_theta),
       max_steps_(max_steps), theta_(slices, 0.0), Vdot_(slices), kd_(slices), bT_(slices),
-      kstd_(slices), kfast_(slices), kno2_(slices), kox_(slices), scratch_(2 * slices + 5) {
-  const int neq = 2 * n_ + 5;
-  std::vector<double> atol(neq);
-  for (int i = 0; i < n_; ++i) atol[i] = atol_theta_;
-  for (int i = n_; i < n_ + 5; ++i) atol[i] = 1e-14;  // mol
-  for (int i = n_ + 5; i < neq; ++i) atol[i] = 1e-8;  // J
-  cvode_ = std::make_unique<CvodeSolver>("aftertreatment SCR", neq, &rhsCallback, this, rtol_, atol,
-                                         max_steps_);
+      kstd_(slices), kfast_(slices), kno2_(slices), kox_(slices), scratch_(slices) {
+  cvode_ = std::make_unique<CvodeSolver>("aftertreatment SCR", n_, &rhsCallback, this, rtol_,
+                                         std::vector<double>(n_, atol_theta_), max_steps_);
+  std::vector<double> atolQ(n_ + 5);
+  for (int i = 0; i < 5; ++i) atolQ[i] = 1e-14;       // mol
+  for (int i = 5; i < n_ + 5; ++i) atolQ[i] = 1e-8;   // J
+  cvode_->addQuadratures(n_ + 5, &quadCallback, atolQ);
 }
 
 ScrStorage::~ScrStorage() = default;
@@ -60,7 +63,7 @@ double ScrStorage::equilibriumCoverage(double T, double c) const {
   return 0.5 * (lo + hi);
 }
 
-void ScrStorage::rhs(const double* y, double* yd, double* out) const {
+void ScrStorage::rhs(const double* y, double* yd, double* qd, double* out) const {
   const double Om = k_.omega_mol_m3;
   double nNH3 = in_.n_NH3_mol_s, nNO = in_.n_NO_mol_s, nNO2 = in_.n_NO2_mol_s;
   double sum_std = 0.0, sum_fast = 0.0, sum_no2 = 0.0, sum_ox = 0.0;
@@ -91,21 +94,23 @@ void ScrStorage::rhs(const double* y, double* yd, double* out) const {
     const double r_fast = kfast_[i] * c1 * c2 * Om * th;
     const double r_no2 = kno2_[i] * c2 * Om * th;
     const double r_ox = kox_[i] * Om * th;
-    yd[i] = (r_ads - r_des - r_std - 2.0 * r_fast - (4.0 / 3.0) * r_no2 - r_ox) / Om;
+    if (yd) yd[i] = (r_ads - r_des - r_std - 2.0 * r_fast - (4.0 / 3.0) * r_no2 - r_ox) / Om;
     sum_std += Vs_ * r_std;
     sum_fast += Vs_ * r_fast;
     sum_no2 += Vs_ * r_no2;
     sum_ox += Vs_ * r_ox;
-    yd[n_ + 5 + i] = Vs_ * (r_std * kDH_std + r_fast * kDH_fast + r_no2 * kDH_no2 + r_ox * kDH_ox);
+    if (qd) qd[5 + i] = Vs_ * (r_std * kDH_std + r_fast * kDH_fast + r_no2 * kDH_no2 + r_ox * kDH_ox);
     nNH3 = V * c3;
     nNO = V * c1;
     nNO2 = V * c2;
   }
-  yd[n_] = nNH3;
-  yd[n_ + 1] = sum_std;
-  yd[n_ + 2] = sum_fast;
-  yd[n_ + 3] = sum_no2;
-  yd[n_ + 4] = sum_ox;
+  if (qd) {
+    qd[0] = nNH3;
+    qd[1] = sum_std;
+    qd[2] = sum_fast;
+    qd[3] = sum_no2;
+    qd[4] = sum_ox;
+  }
   if (out) {
     out[0] = nNO;
     out[1] = nNO2;
@@ -126,8 +131,9 @@ ScrStepResult ScrStorage::step(double dt, const ScrInlet& in, const double* T_K,
     kox_[i] = k_.k_ox_ref * std::exp(-k_.E_ox / kRu * (1.0 / T - 1.0 / k_.T_ox_ref));
   }
   double* y = cvode_->y();
+  double* q = cvode_->quadratures();
   for (int i = 0; i < n_; ++i) y[i] = theta_[i];
-  for (int i = n_; i < cvode_->size(); ++i) y[i] = 0.0;
+  for (int i = 0; i < n_ + 5; ++i) q[i] = 0.0;
   cvode_->reinit();
   cvode_->setStopTime(dt);
   steps_ += cvode_->advance(dt, "NH3 coverage");
@@ -137,16 +143,16 @@ ScrStepResult ScrStorage::step(double dt, const ScrInlet& in, const double* T_K,
       throw ModelDivergence("aftertreatment SCR slice " + std::to_string(i), "NH3 coverage",
                             "non-physical value " + std::to_string(y[i]));
     theta_[i] = y[i];
-    if (heat_J) heat_J[i] = y[n_ + 5 + i];
+    if (heat_J) heat_J[i] = q[5 + i];
   }
-  r.nh3_slip_mol = y[n_];
-  r.std_mol = y[n_ + 1];
-  r.fast_mol = y[n_ + 2];
-  r.no2_mol = y[n_ + 3];
-  r.ox_mol = y[n_ + 4];
+  r.nh3_slip_mol = q[0];
+  r.std_mol = q[1];
+  r.fast_mol = q[2];
+  r.no2_mol = q[3];
+  r.ox_mol = q[4];
   double out[3];
   // Outlet flows at the end state (instantaneous values for reporting).
-  rhs(y, scratch_.data(), out);
+  rhs(y, scratch_.data(), nullptr, out);
   r.n_NO_out_mol_s = out[0];
   r.n_NO2_out_mol_s = out[1];
   r.nh3_out_mol_s = out[2];

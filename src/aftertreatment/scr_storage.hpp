@@ -22,8 +22,10 @@
 //        -> one quadratic in c1, solved in closed (cancellation-free) form.
 // The storage capacity at a given gas NH3 level falls with temperature through the Temkin
 // equilibrium k_ads c (1 - theta) = k_des exp(-E_des (1 - alpha theta)/RT) theta (equilibriumCoverage).
-// Integrated alongside (so that balances close to the solver tolerance): cumulative NH3 slip,
-// mol of standard / fast / NO2 / oxidation events, and the reaction heat per slice
+// Integrated alongside as quadratures (outside the Newton iteration, which covers the N
+// coverages alone; in the error test, so that balances close to the solver tolerance):
+// cumulative NH3 slip, mol of standard / fast / NO2 / oxidation events, and the reaction heat
+// per slice
 //   dQ_i/dt = V_s (r_std dH_std + r_fast dH_fast + r_no2 dH_no2 + r_ox dH_ox),
 //   dH_std = 407 kJ/mol NO, dH_fast = 757 kJ per event, dH_no2 = 455.5 kJ/mol NO2,
 //   dH_ox = 317 kJ/mol NH3 (released; from
@@ -86,11 +88,13 @@ class ScrStorage {
   const ScrKinetics& kinetics() const { return k_; }
   long solverSteps() const { return steps_; }
 
-  /// Right-hand side (public for the CVODE callback); y = [theta_0..N-1, slip, std, fast, no2, ox, Q_0..N-1].
-  void rhs(const double* y, double* yd, double* out_flows = nullptr) const;
+  /// Right-hand sides (public for the CVODE callbacks) at coverages theta[N]: dtheta/dt into yd
+  /// and the quadratures' rates d[slip, std, fast, no2, ox, Q_0..N-1]/dt into qd (either may be
+  /// null), the outlet molar flows [NO, NO2, NH3] into out_flows if given.
+  void rhs(const double* theta, double* yd, double* qd, double* out_flows = nullptr) const;
 
  private:
-  std::unique_ptr<CvodeSolver> cvode_;  // state: coverages, then 5 amounts [mol], then heats [J]
+  std::unique_ptr<CvodeSolver> cvode_;  // state: coverages; quadratures: 5 amounts [mol], heats [J]
   ScrKinetics k_;
   int n_;
   double Vs_;

@@ -22,7 +22,7 @@ std::string flagName(int flag) {
 CvodeSolver::CvodeSolver(const std::string& owner, int neq, CVRhsFn rhs, void* user_data,
                          double rtol, const std::vector<double>& atol, long max_steps,
                          CVLsJacFn jac)
-    : owner_(owner), neq_(neq) {
+    : owner_(owner), neq_(neq), rtol_(rtol) {
   if (neq <= 0 || static_cast<int>(atol.size()) != neq)
     throw ModelDivergence(owner_, "CVODE", "need neq > 0 and one absolute tolerance per equation");
   if (SUNContext_Create(nullptr, &ctx_) != 0)
@@ -65,11 +65,13 @@ void CvodeSolver::release() {
   if (A_) SUNMatDestroy(A_);
   if (y_) N_VDestroy(y_);
   if (atol_) N_VDestroy(atol_);
+  if (q_) N_VDestroy(q_);
+  if (atolQ_) N_VDestroy(atolQ_);
   if (ctx_) SUNContext_Free(&ctx_);
   mem_ = nullptr;
   LS_ = nullptr;
   A_ = nullptr;
-  y_ = atol_ = nullptr;
+  y_ = atol_ = q_ = atolQ_ = nullptr;
 }
 
 double* CvodeSolver::y() { return N_VGetArrayPointer(y_); }
@@ -79,15 +81,42 @@ void CvodeSolver::check(int flag, const char* call) const {
   if (flag != CV_SUCCESS) throw ModelDivergence(owner_, "CVODE", std::string(call) + " failed: " + flagName(flag));
 }
 
-void CvodeSolver::reinit() { check(CVodeReInit(mem_, 0.0, y_), "CVodeReInit"); }
+void CvodeSolver::reinit() {
+  check(CVodeReInit(mem_, 0.0, y_), "CVodeReInit");
+  if (q_) check(CVodeQuadReInit(mem_, q_), "CVodeQuadReInit");
+}
+
+void CvodeSolver::addQuadratures(int nq, CVQuadRhsFn rhsQ, const std::vector<double>& atolQ) {
+  if (q_ || nq <= 0 || static_cast<int>(atolQ.size()) != nq)
+    throw ModelDivergence(owner_, "CVODE", "quadratures: added once, nq > 0, one absolute tolerance each");
+  q_ = N_VNew_Serial(nq, ctx_);
+  atolQ_ = N_VNew_Serial(nq, ctx_);
+  if (!q_ || !atolQ_) throw ModelDivergence(owner_, "CVODE", "N_VNew_Serial failed (quadratures)");
+  double* q0 = N_VGetArrayPointer(q_);
+  double* a = N_VGetArrayPointer(atolQ_);
+  for (int i = 0; i < nq; ++i) {
+    q0[i] = 0.0;
+    a[i] = atolQ[i];
+  }
+  check(CVodeQuadInit(mem_, rhsQ, q_), "CVodeQuadInit");
+  check(CVodeQuadSVtolerances(mem_, rtol_, atolQ_), "CVodeQuadSVtolerances");
+  check(CVodeSetQuadErrCon(mem_, SUNTRUE), "CVodeSetQuadErrCon");
+}
+
+double* CvodeSolver::quadratures() { return q_ ? N_VGetArrayPointer(q_) : nullptr; }
 void CvodeSolver::setStopTime(double t_stop) { check(CVodeSetStopTime(mem_, t_stop), "CVodeSetStopTime"); }
-void CvodeSolver::setTolerances(double rtol) { check(CVodeSVtolerances(mem_, rtol, atol_), "CVodeSVtolerances"); }
+void CvodeSolver::setTolerances(double rtol) {
+  rtol_ = rtol;
+  check(CVodeSVtolerances(mem_, rtol, atol_), "CVodeSVtolerances");
+  if (q_) check(CVodeQuadSVtolerances(mem_, rtol, atolQ_), "CVodeQuadSVtolerances");
+}
 void CvodeSolver::setInitialStep(double h0) { check(CVodeSetInitStep(mem_, h0), "CVodeSetInitStep"); }
 
 long CvodeSolver::advance(double t_out, const char* quantity) {
   realtype t = 0.0;
   const int flag = CVode(mem_, t_out, y_, &t, CV_NORMAL);
   if (flag < 0) throw ModelDivergence(owner_, quantity, "CVODE failed: " + flagName(flag));
+  if (q_) check(CVodeGetQuad(mem_, &t, q_), "CVodeGetQuad");
   long nst = 0;
   CVodeGetNumSteps(mem_, &nst);
   return nst;

@@ -2,9 +2,14 @@
 // SUNContext, the state and absolute-tolerance vectors, the dense matrix and linear solver and
 // the CVODE memory, freed in reverse order by the destructor. A failure of any SUNDIALS call
 // throws hbt::ModelDivergence naming the owner, the call and CVODE's flag name.
+//
+// Quadratures (optional): integrals q(t) = ∫ g(t, y) dt that the state's right-hand side does
+// not depend on (cumulative amounts, heats). CVODES integrates them with the state's steps but
+// outside the Newton iteration, so the dense Jacobian and its LU cover the state alone; they
+// are part of the local error test (CVodeSetQuadErrCon) with their own absolute tolerances.
 #pragma once
-#include <cvode/cvode.h>
-#include <cvode/cvode_ls.h>
+#include <cvodes/cvodes.h>
+#include <cvodes/cvodes_ls.h>
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
@@ -40,9 +45,17 @@ class CvodeSolver {
   void setTolerances(double rtol);
   /// First internal step [s] (0: CVODE's estimate).
   void setInitialStep(double h0);
-  /// Integrates from t = 0 to t_out [s] (the state in y()); returns the internal steps taken.
-  /// A failure throws naming `quantity`. No allocation unless it throws.
+  /// Integrates from t = 0 to t_out [s] (the state in y(), the quadratures in quadratures());
+  /// returns the internal steps taken. A failure throws naming `quantity`. No allocation unless
+  /// it throws.
   long advance(double t_out, const char* quantity);
+
+  /// Adds nq quadratures dq/dt = rhsQ(t, y, user_data) with absolute tolerances atolQ (one
+  /// per quadrature, in q's units) and the state's relative tolerance; q = 0 at t = 0. Call once,
+  /// after construction.
+  void addQuadratures(int nq, CVQuadRhsFn rhsQ, const std::vector<double>& atolQ);
+  /// The quadratures: set them before reinit() (their values at t = 0), read them after advance().
+  double* quadratures();
 
  private:
   void check(int flag, const char* call) const;
@@ -51,7 +64,8 @@ class CvodeSolver {
   std::string owner_;
   int neq_ = 0;
   SUNContext ctx_ = nullptr;
-  N_Vector y_ = nullptr, atol_ = nullptr;
+  double rtol_ = 0.0;
+  N_Vector y_ = nullptr, atol_ = nullptr, q_ = nullptr, atolQ_ = nullptr;
   SUNMatrix A_ = nullptr;
   SUNLinearSolver LS_ = nullptr;
   void* mem_ = nullptr;

@@ -1,5 +1,6 @@
-// CvodeSolver: integrates a linear decay to CVODE's tolerance and names CVODE's flag and the
-// owner when the integration fails.
+// CvodeSolver: integrates a linear decay to CVODE's tolerance, its quadratures to their exact
+// integrals (restarting from the values set), and names CVODE's flag and the owner when the
+// integration fails.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +15,14 @@ namespace {
 int decay(realtype, N_Vector y, N_Vector yd, void* ud) {
   const double k = *static_cast<const double*>(ud);
   N_VGetArrayPointer(yd)[0] = -k * N_VGetArrayPointer(y)[0];
+  return 0;
+}
+
+// quadratures of the decay: q0 = ∫ y dt, q1 = ∫ y² dt
+int decayIntegrals(realtype, N_Vector y, N_Vector qd, void*) {
+  const double x = N_VGetArrayPointer(y)[0];
+  N_VGetArrayPointer(qd)[0] = x;
+  N_VGetArrayPointer(qd)[1] = x * x;
   return 0;
 }
 
@@ -40,6 +49,25 @@ TEST(CvodeSolver, IntegratesAnExponentialDecay) {
     EXPECT_GT(s.advance(0.5, "y"), 0);
     EXPECT_NEAR(s.y()[0], std::exp(-1.0), 1e-6);
   }
+}
+
+TEST(CvodeSolver, QuadraturesIntegrateExactlyAndRestartFromTheirSetValues) {
+  // y = exp(-k t): ∫0^T y dt = (1 - e^{-kT})/k, ∫0^T y² dt = (1 - e^{-2kT})/(2k)
+  double k = 2.0;
+  const double T = 0.5;
+  hbt::CvodeSolver s("decay", 1, &decay, &k, 1e-8, {1e-12}, 5000);
+  s.addQuadratures(2, &decayIntegrals, {1e-12, 1e-12});
+  for (const double q0 : {0.0, 3.0}) {  // a restart from set values: the integral adds to them
+    s.y()[0] = 1.0;
+    s.quadratures()[0] = q0;
+    s.quadratures()[1] = 0.0;
+    s.reinit();
+    s.setStopTime(T);
+    s.advance(T, "y");
+    EXPECT_NEAR(s.quadratures()[0], q0 + (1.0 - std::exp(-k * T)) / k, 1e-7);
+    EXPECT_NEAR(s.quadratures()[1], (1.0 - std::exp(-2.0 * k * T)) / (2.0 * k), 1e-7);
+  }
+  EXPECT_THROW(s.addQuadratures(1, &decayIntegrals, {1e-12}), hbt::ModelDivergence);  // once only
 }
 
 TEST(CvodeSolver, FailuresNameOwnerQuantityAndFlag) {
