@@ -9,7 +9,8 @@ status twin writes then (twin_tools.launch.lost_status) names it and the signal.
 hung: every participant misses its heartbeat for 2 timeouts; the recorder closes the bag, writes
 the status naming the stepper and ends it. The whole nodelet manager stopped (SIGSTOP; every
 participant, the stepper and the recorder inside it) under `twin run`: its watcher ends the run at
-the timeout, status.json "error" names the manager, and the bag is closed.
+the timeout, status.json "error" names the manager, and the bag is closed; the manager killed
+(SIGKILL): roslaunch stops the run and twin's status names it and the signal.
 Faults of a model (a step that throws or yields NaN) are tested per model (their ModelDivergence
 and InputError tests) and for the protocol in test/cosim; this test covers the processes."""
 import os
@@ -221,22 +222,23 @@ class Faults(unittest.TestCase):
         readable(self, out, "stepper")
         self.table.append(("stepper", "SIGSTOP", st["message"][:90], delay))
 
-    def test_nodelet_manager_stopped(self):
-        # twin run (its watcher lives beside roslaunch), nodelets: SIGSTOP to the manager once the
-        # run is stepping; the run ends at the timeout with the manager named and the bag closed
-        out = os.path.join(self.tmp, "manager_SIGSTOP")
-        port, lock = ports.reserve_port(os.getpid() % 1000)
+    def manager_fault(self, sig, after_s):
+        """twin run of hybrid_urban (nodelets) with `sig` sent to the nodelet manager once the run
+        is stepping past after_s [s]; returns (out, status, exit status, twin's output, manager pid, seconds from the
+        signal to the watcher's record or the end of roslaunch)."""
+        out = os.path.join(self.tmp, "manager_" + signal.Signals(sig).name)
+        port, lock = ports.reserve_port(os.getpid() % 1000 + sig)
         env = dict(os.environ, HBT_SETUP_DONE="1", HBT_ROS_PORT=str(port))
         proc = subprocess.Popen([TWIN, "run", "hybrid_urban", "--out", out, "timeout:=%g" % TIMEOUT_S], env=env,
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True)
         try:
-            run_util.wait_until_stepping(out, proc, after_s=10.0)
+            run_util.wait_until_stepping(out, proc, after_s=after_s)
             pid = manager_watch.manager_pid(port)
             self.assertIsNotNone(pid, "no nodelet manager on port %d" % port)
             t_sig = time.time()
-            os.kill(pid, signal.SIGSTOP)
+            os.kill(pid, sig)
             marker = os.path.join(out, manager_watch.RECORD)
-            while proc.poll() is None and not os.path.exists(marker):
+            while proc.poll() is None and not os.path.exists(marker) and manager_watch.process_state(pid) not in (None, "Z"):
                 time.sleep(0.05)
             delay = time.time() - t_sig
             text = proc.communicate(timeout=120)[0].decode(errors="replace")
@@ -244,8 +246,13 @@ class Faults(unittest.TestCase):
             if proc.poll() is None:
                 os.killpg(proc.pid, signal.SIGKILL)
             os.close(lock)
-        self.assertNotEqual(proc.returncode, 0, text[-2000:])
-        st = run_util.read_status(out)
+        return out, run_util.read_status(out), proc.returncode, text, pid, delay
+
+    def test_nodelet_manager_stopped(self):
+        # nodelets under twin run (its watcher lives beside roslaunch): SIGSTOP to the manager ends
+        # the run at the timeout with the manager named and the bag closed by the recorder
+        out, st, rc, text, pid, delay = self.manager_fault(signal.SIGSTOP, 10.0)
+        self.assertNotEqual(rc, 0, text[-2000:])
         self.assertEqual(st["status"], "error", st)
         self.assertRegex(st["message"], r"^the nodelet manager twin_manager \(pid %d\), which holds every participant, "
                          r"the stepper and the recorder, was stopped from outside \(SIGSTOP: process state T\) for "
@@ -257,6 +264,19 @@ class Faults(unittest.TestCase):
         readable(self, out, "manager")
         self.table.append(("nodelet manager", "SIGSTOP", st["message"][:90], delay))
 
+    def test_nodelet_manager_killed(self):
+        # nodelets: the manager (every participant, the stepper, the recorder) killed: roslaunch
+        # stops the run; twin's status names the manager and the signal; the recorder died with
+        # it, so the bag is cut short and readable after `rosbag reindex`
+        # (late enough that the bag holds whole chunks, as for the recorder above)
+        out, st, rc, text, pid, delay = self.manager_fault(signal.SIGKILL, 200.0)
+        self.assertNotEqual(rc, 0, text[-2000:])
+        self.assertEqual(st["status"], "error", st)
+        self.assertIn("twin_manager died (killed by SIGKILL) before the run's end", st["message"])
+        self.assertIn("twin: run FAILED: twin_manager died (killed by SIGKILL)", text)
+        self.assertGreater(st["sim_time_s"], 200.0)
+        readable(self, out, "recorder")  # the recorder's own death: reindexed
+        self.table.append(("nodelet manager", "SIGKILL", st["message"][:90], delay))
 
 if __name__ == "__main__":
     run_util.unittest_main()
