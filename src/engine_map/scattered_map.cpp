@@ -179,6 +179,7 @@ ScatteredLinearMap::ScatteredLinearMap(std::vector<double> x, std::vector<double
       throw InputError(source, "points", "duplicate point " + std::to_string(i + 1));
   }
   triangulate(source);
+  buildBaryTerms();
   buildCellIndex();
   buildOuterIndex();
 }
@@ -217,13 +218,28 @@ void ScatteredLinearMap::triangulate(const std::string& source) {
   if (tri_.empty()) throw InputError(source, "points", "no triangle (points collinear)");
 }
 
+void ScatteredLinearMap::buildBaryTerms() {
+  bary_.resize(tri_.size());
+  for (std::size_t k = 0; k < tri_.size(); ++k) {
+    const auto& t = tri_[k];
+    const double ax = pu_[t[0]], ay = pv_[t[0]], bx = pu_[t[1]], by = pv_[t[1]];
+    const double cx = pu_[t[2]], cy = pv_[t[2]];
+    BaryTerms& b = bary_[k];
+    b.ax = ax;
+    b.ay = ay;
+    b.bx_ax = bx - ax;
+    b.by_ay = by - ay;
+    b.cx_ax = cx - ax;
+    b.cy_ay = cy - ay;
+    b.det = b.bx_ax * b.cy_ay - b.by_ay * b.cx_ax;
+  }
+}
+
 std::array<double, 3> ScatteredLinearMap::bary(std::size_t k, double qu, double qv) const {
-  const auto& t = tri_[k];
-  const double ax = pu_[t[0]], ay = pv_[t[0]], bx = pu_[t[1]], by = pv_[t[1]];
-  const double cx = pu_[t[2]], cy = pv_[t[2]];
-  const double det = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-  const double lb = ((qu - ax) * (cy - ay) - (qv - ay) * (cx - ax)) / det;
-  const double lc = ((bx - ax) * (qv - ay) - (by - ay) * (qu - ax)) / det;
+  // the same operations in the same order as from the vertices: the terms are exact copies
+  const BaryTerms& b = bary_[k];
+  const double lb = ((qu - b.ax) * b.cy_ay - (qv - b.ay) * b.cx_ax) / b.det;
+  const double lc = (b.bx_ax * (qv - b.ay) - b.by_ay * (qu - b.ax)) / b.det;
   return {1.0 - lb - lc, lb, lc};
 }
 

@@ -90,6 +90,8 @@ class ScatteredLinearMap {
   int containingTriangle(double qu, double qv) const;
   /// Index of the first triangle at the least distance from (qu, qv).
   int nearestTriangle(double qu, double qv) const;
+  /// The vertex differences and determinant of every triangle, for bary().
+  void buildBaryTerms();
   /// Barycentric coordinates of (pu, pv) in triangle k.
   std::array<double, 3> bary(std::size_t k, double pu, double pv) const;
 
@@ -97,6 +99,9 @@ class ScatteredLinearMap {
   std::vector<std::array<int, 3>> tri_;
   double x0_ = 0.0, y0_ = 0.0, sx_ = 1.0, sy_ = 1.0;
   CellIndex inner_, outer_;
+  // per triangle (a, b, c) in normalised coordinates: a, b - a, c - a and the determinant
+  struct BaryTerms { double ax, ay, bx_ax, by_ay, cx_ax, cy_ay, det; };
+  std::vector<BaryTerms> bary_;
   // a point counts as inside a triangle when every barycentric coordinate is >= -this [-]
   static constexpr double kBaryTolerance = 1e-12;
   // widening of a triangle's bounding box in the inner index [-] (normalised; >> kBaryTolerance)
