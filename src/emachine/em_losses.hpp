@@ -1,6 +1,10 @@
 // Physics-based loss model of the 48 V PMSM + MOSFET inverter (no loss map is given by VECTO).
 // All quantities at the EM shaft; phase quantities are per-phase RMS; SI units.
 //
+// Magnet temperature: the NdFeB remanence falls reversibly with the magnet temperature T_m,
+//   β(T_m) = 1 + α_Br (T_m − T_ref),  α_Br < 0 [1/K], T_ref = the datasheet temperature of k_t,
+// and with it the magnet flux linkage ψ_m: k_t = β k_t,ref, I_ch = β I_ch,ref (= ψ_m/L),
+// B̂ = β B̂_ref. β is floored at 0.05 (far outside any sane operating range).
 // Current (surface-magnet PMSM, i_d = 0 below the voltage limit):
 //   k_e = k_t/3 [V s/rad]  (back-EMF per phase, RMS; P = 3 E I_q = T ω)
 //   V_ph,max = k_v V_dc,   k_v = 1/√6 (SVPWM linear range, phase RMS)
@@ -36,7 +40,8 @@ namespace hbt::emachine {
 struct LossBreakdown {
   double i_q_A = 0, i_d_A = 0, i_A = 0;  // phase RMS currents (i_d <= 0)
   double frequency_Hz = 0;               // electrical frequency
-  double flux_ratio = 1;                 // B/B̂
+  double flux_ratio = 1;                 // B/B̂ (field weakening)
+  double magnet_flux_factor = 1;         // β(T_m): k_t/k_t,ref
   double copper_W = 0, iron_W = 0, rotor_W = 0, bearing_W = 0, windage_W = 0;
   double inverter_conduction_W = 0, inverter_switching_W = 0, inverter_fixed_W = 0;
   double machineHeat() const { return copper_W + iron_W + rotor_W + bearing_W + windage_W; }
@@ -51,12 +56,19 @@ class LossModel {
             const InverterParams& inv)
       : e_(e), fe_(fe), m_(m), inv_(inv) {}
   /// Losses at EM shaft torque T [Nm] (signed), EM speed w >= 0 [rad/s], DC voltage V [V],
-  /// winding temperature T_w [K]. Finite for every finite input (w = 0, V = 0 included).
-  LossBreakdown evaluate(double T_Nm, double w_rad_s, double V, double T_winding_K) const;
+  /// winding and magnet temperatures [K]. Finite for every finite input (w = 0, V = 0 included).
+  LossBreakdown evaluate(double T_Nm, double w_rad_s, double V, double T_winding_K,
+                         double T_magnet_K) const;
   /// Phase resistance incl. temperature and AC factor [ohm].
   double phaseResistance(double T_winding_K, double f_Hz) const;
-  /// ω_v at V [rad/s] (0 for V <= 0).
-  double voltageLimitSpeed(double V) const;
+  /// Magnet flux factor β(T_m) [-] (1 at the reference temperature).
+  double magnetFluxFactor(double T_magnet_K) const;
+  /// Torque constant k_t at the magnet temperature [Nm/A].
+  double torqueConstant(double T_magnet_K) const {
+    return e_.torque_constant_Nm_A * magnetFluxFactor(T_magnet_K);
+  }
+  /// ω_v at V and the magnet temperature [rad/s] (0 for V <= 0).
+  double voltageLimitSpeed(double V, double T_magnet_K) const;
 
  private:
   ElectricalParams e_;

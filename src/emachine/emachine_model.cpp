@@ -29,9 +29,10 @@ EMachineModel::EMachineModel(const EMachineParams& p, const std::string& file, c
                         e.continuous_power_W, e.continuous_torque_Nm);
   loss_ = LossModel(p_.electrical, p_.iron, p_.mechanical, p_.inverter);
   const auto& t = p_.thermal;
-  ThermalNetwork::Vec C, g;
+  ThermalNetwork::Vec C, g, ge;
   C << t.C_winding_J_K, t.C_stator_J_K, t.C_rotor_J_K, t.C_housing_J_K;
   g << 0.0, 0.0, 0.0, t.G_housing_coolant_W_K;
+  ge << 0.0, 0.0, t.G_rotor_crank_W_K, t.G_housing_engine_W_K;
   ThermalNetwork::Mat G = ThermalNetwork::Mat::Zero();
   auto link = [&G](int i, int j, double v) { G(i, j) = G(j, i) = v; };
   enum { W = 0, S = 1, R = 2, H = 3 };
@@ -40,7 +41,7 @@ EMachineModel::EMachineModel(const EMachineParams& p, const std::string& file, c
   link(S, H, t.G_stator_housing_W_K);
   link(R, S, t.G_rotor_stator_W_K);
   link(R, H, t.G_rotor_housing_W_K);
-  net_ = ThermalNetwork(C, G, g, file);
+  net_ = ThermalNetwork(C, G, g, ge, file);
   reset(units::celsiusToK(25.0));
 }
 
@@ -80,9 +81,9 @@ CrankLimits EMachineModel::limits(double w_crank, double V, double T_w, double T
   return c;
 }
 
-double EMachineModel::dcPower(double T_crank, double w_crank, double V, double T_w) const {
+double EMachineModel::dcPower(double T_crank, double w_crank, double V, double T_w, double T_mag) const {
   const double T_em = emTorque(T_crank), w_em = p_.data.ratio * std::max(0.0, w_crank);
-  return T_em * w_em + loss_.evaluate(T_em, w_em, std::max(0.0, V), T_w).total();
+  return T_em * w_em + loss_.evaluate(T_em, w_em, std::max(0.0, V), T_w, T_mag).total();
 }
 
 ThermalNetwork::Vec EMachineModel::nodeHeat(const LossBreakdown& b) {
@@ -119,6 +120,7 @@ void EMachineModel::step(double dt, const EMachineInputs& in) {
   requireFinite(in.crank_speed_rad_s, "crank_speed_rad_s");
   requireFinite(in.dc_voltage_V, "dc_voltage_V");
   requireFinite(in.coolant_T_K, "coolant_T_K");
+  requireFinite(in.engine_T_K, "engine_T_K");
   if (!std::isfinite(dt) || !(dt > 0.0)) throw ModelDivergence("emachine", "time step", "must be finite and > 0");
 
   const double w_c = std::max(0.0, in.crank_speed_rad_s);
@@ -130,16 +132,20 @@ void EMachineModel::step(double dt, const EMachineInputs& in) {
   const double T_em = emTorque(T_crank);
   const double P_em = T_em * w_em, P_crank = T_crank * w_c;
   const double P_ratio = P_em - P_crank;
-  const LossBreakdown b = loss_.evaluate(T_em, w_em, V, x_(0));
+  const LossBreakdown b = loss_.evaluate(T_em, w_em, V, x_(0), x_(2));
   const double P_dc = P_em + b.total();
 
   // Thermal network, exact over the step.
   const ThermalNetwork::Vec q = nodeHeat(b);
   ThermalNetwork::Vec xi;
-  net_.step(dt, q, in.coolant_T_K, x_, xi);
+  net_.step(dt, q, in.coolant_T_K, in.engine_T_K, x_, xi);
   const ThermalNetwork::Vec& g = net_.coolantConductance();
-  double Q_housing = 0.0;
-  for (int i = 0; i < ThermalNetwork::N; ++i) Q_housing += g(i) * (xi(i) - in.coolant_T_K * dt);
+  const ThermalNetwork::Vec& ge = net_.engineConductance();
+  double Q_housing = 0.0, Q_engine = 0.0;
+  for (int i = 0; i < ThermalNetwork::N; ++i) {
+    Q_housing += g(i) * (xi(i) - in.coolant_T_K * dt);
+    Q_engine += ge(i) * (in.engine_T_K * dt - xi(i));
+  }
   const double Q_coolant = Q_housing + b.inverter() * dt;
 
   // Bookkeeping.
@@ -157,6 +163,7 @@ void EMachineModel::step(double dt, const EMachineInputs& in) {
   o.ratio_loss_W = P_ratio;
   o.total_loss_W = b.total() + P_ratio;
   o.lt_heat_W = Q_coolant / dt;
+  o.engine_heat_W = Q_engine / dt;
   (P_crank >= 0.0 ? o.mech_motoring_J : o.mech_generating_J) += P_crank * dt;
   (P_dc >= 0.0 ? o.dc_drawn_J : o.dc_returned_J) += P_dc * dt;
   o.dc_J += P_dc * dt;
@@ -167,10 +174,11 @@ void EMachineModel::step(double dt, const EMachineInputs& in) {
   o.inverter_J += b.inverter() * dt;
   o.ratio_J += P_ratio * dt;
   o.heat_to_coolant_J += Q_coolant;
+  o.heat_from_engine_J += Q_engine;
   const ThermalNetwork::Vec& C = net_.capacity();
   o.stored_change_J = C.dot(x_ - x0_);
-  o.energy_residual_J = o.dc_J - (o.mech_motoring_J + o.mech_generating_J) - o.ratio_J -
-                        o.heat_to_coolant_J - o.stored_change_J;
+  o.energy_residual_J = o.dc_J + o.heat_from_engine_J - (o.mech_motoring_J + o.mech_generating_J) -
+                        o.ratio_J - o.heat_to_coolant_J - o.stored_change_J;
   o.time_s += dt;
   o.winding_T_K = x_(0);
   o.stator_T_K = x_(1);

@@ -24,11 +24,14 @@
 // with the temperatures at the step start) is clamped; the delivered torque is reported.
 //
 // THERMAL NETWORK (nodes W winding, S stator iron, R rotor + magnets, H housing + coolant jacket;
-// boundary: LT coolant T_c):
+// boundaries: LT coolant T_c and the engine T_e — the P1 housing is bolted to the flywheel
+// housing and the rotor hub to the crankshaft flange, both at the engine structure's temperature):
 //   C_W dT_W/dt = P_cu − G_WS (T_W − T_S) − G_WH (T_W − T_H)
 //   C_S dT_S/dt = P_fe + G_WS (T_W − T_S) − G_SH (T_S − T_H) − G_RS (T_S − T_R)
-//   C_R dT_R/dt = P_rotor + P_windage + G_RS (T_S − T_R) − G_RH (T_R − T_H)
+//   C_R dT_R/dt = P_rotor + P_windage + G_RS (T_S − T_R) − G_RH (T_R − T_H) + G_RE (T_e − T_R)
 //   C_H dT_H/dt = P_bearing + G_WH (T_W − T_H) + G_SH (T_S − T_H) + G_RH (T_R − T_H) − G_HC (T_H − T_c)
+//                 + G_HE (T_e − T_H)
+// Heat from the engine Q̇_e = G_RE (T_e − T_R) + G_HE (T_e − T_H) (> 0 into the machine).
 // The inverter loss goes straight to the LT coolant (cold plate in the same circuit, small heat
 // capacity): heat to the LT coolant = G_HC (T_H − T_c) + P_inv. Losses are evaluated with the
 // state at the step start and held over the step; the network step is exact.
@@ -37,8 +40,9 @@
 //   E_dc = E_dc,drawn (>= 0) + E_dc,returned (<= 0) = ∫ P_dc dt
 //   W_crank = W_mot (>= 0) + W_gen (<= 0) = ∫ T_crank ω_crank dt
 //   E_dc = W_crank + E_ratio + E_cu + E_fe + E_rotor + E_mech + E_inv          (algebraic)
-//   E_cu + E_fe + E_rotor + E_mech = Q_housing→coolant + Σ C (T − T_0)         (network, exact)
-//   residual = E_dc − W_crank − E_ratio − Q_to_coolant − ΔU_stored,  Q_to_coolant = Q_housing + E_inv
+//   E_cu + E_fe + E_rotor + E_mech + Q_engine = Q_housing→coolant + Σ C (T − T_0)   (network, exact)
+//   residual = E_dc + Q_engine − W_crank − E_ratio − Q_to_coolant − ΔU_stored,
+//   Q_to_coolant = Q_housing + E_inv
 #pragma once
 #include <string>
 
@@ -54,6 +58,7 @@ struct EMachineInputs {
   double crank_speed_rad_s = 0.0;   // [rad/s] (negative values are taken as 0)
   double dc_voltage_V = 48.0;       // battery terminal voltage [V]
   double coolant_T_K = 298.15;      // LT coolant temperature [K]
+  double engine_T_K = 298.15;       // engine structure (flywheel housing, crankshaft) [K]
 };
 
 /// Torque limits at the crank [Nm] (max >= 0, min <= 0).
@@ -72,6 +77,7 @@ struct EMachineOutputs {
   double ratio_loss_W = 0;
   double total_loss_W = 0;          // machine + inverter + ratio stage
   double lt_heat_W = 0;             // mean heat into the LT coolant over the last step
+  double engine_heat_W = 0;         // mean heat conducted in from the engine over the last step (> 0 in)
   // End-of-step state.
   double winding_T_K = 0, stator_T_K = 0, magnet_T_K = 0, housing_T_K = 0;
   CrankLimits limits;               // at the last speed/voltage and the end-of-step temperatures
@@ -80,6 +86,7 @@ struct EMachineOutputs {
   double dc_J = 0, dc_drawn_J = 0, dc_returned_J = 0;
   double copper_J = 0, iron_J = 0, rotor_J = 0, mechanical_J = 0, inverter_J = 0, ratio_J = 0;
   double heat_to_coolant_J = 0;     // housing -> coolant + inverter
+  double heat_from_engine_J = 0;    // engine -> housing and rotor (> 0 into the machine)
   double stored_change_J = 0;       // Σ C (T − T_0)
   double energy_residual_J = 0;
   double time_s = 0;
@@ -106,10 +113,11 @@ class EMachineModel {
   /// Node heat inputs [W] (W, S, R, H) of a loss breakdown.
   static ThermalNetwork::Vec nodeHeat(const LossBreakdown& b);
   /// DC power [W] (> 0 drawn from the battery) of crank torque T_crank [Nm] at crank speed [rad/s],
-  /// voltage V and winding temperature [K]: EM shaft power + machine and inverter losses (the
-  /// ratio stage's loss is inside the EM torque). The power step() books for a request inside the
-  /// live limits.
-  double dcPower(double crank_torque_Nm, double crank_speed_rad_s, double V, double T_winding_K) const;
+  /// voltage V, winding and magnet temperatures [K]: EM shaft power + machine and inverter losses
+  /// (the ratio stage's loss is inside the EM torque). The power step() books for a request inside
+  /// the live limits.
+  double dcPower(double crank_torque_Nm, double crank_speed_rad_s, double V, double T_winding_K,
+                 double T_magnet_K) const;
   /// Crank torque of an EM torque and back.
   double crankTorque(double T_em) const;
   double emTorque(double T_crank) const;

@@ -23,6 +23,10 @@ void EMachineParams::declare(ParamSet& ps) {
   ElectricalParams& el = electrical;
   ps.setPrefix("electrical/");
   ps.add("torque_constant_Nm_A", el.torque_constant_Nm_A, "Nm/A", 0.01, 10.0, "k_t = T/I_q (phase RMS)");
+  ps.add("torque_constant_ref_K", el.torque_constant_ref_K, "K", 200.0, 450.0,
+         "magnet temperature at which torque_constant_Nm_A, characteristic_current_A, peak_flux_density_T hold");
+  ps.add("magnet_remanence_tempco_per_K", el.magnet_remanence_tempco_per_K, "1/K", -0.01, 0.0,
+         "reversible temperature coefficient of the magnet remanence");
   ps.add("characteristic_current_A", el.characteristic_current_A, "A", 0.0, 5000.0, "psi/L (field-weakening current scale)");
   ps.add("pole_pairs", el.pole_pairs, "-", 1, 40, "pole pairs");
   ps.add("phase_resistance_20C_ohm", el.phase_resistance_20C_ohm, "ohm", 1e-5, 1.0, "DC phase resistance at 20 degC");
@@ -66,6 +70,8 @@ void EMachineParams::declare(ParamSet& ps) {
   ps.add("G_rotor_stator_W_K", t.G_rotor_stator_W_K, "W/K", 1e-4, 1e6, "air gap");
   ps.add("G_rotor_housing_W_K", t.G_rotor_housing_W_K, "W/K", 1e-4, 1e6, "shaft, bearings, end-space air");
   ps.add("G_housing_coolant_W_K", t.G_housing_coolant_W_K, "W/K", 1e-4, 1e6, "water jacket to LT coolant");
+  ps.add("G_housing_engine_W_K", t.G_housing_engine_W_K, "W/K", 0.0, 1e6, "housing flange to the flywheel housing");
+  ps.add("G_rotor_crank_W_K", t.G_rotor_crank_W_K, "W/K", 0.0, 1e6, "rotor hub to the crankshaft flange");
 
   DeratingParams& d = derating;
   ps.setPrefix("derating/");

@@ -34,7 +34,9 @@ struct EnvelopeParams {
 
 /// Phase-current model of the PMSM (per-phase RMS quantities) and copper losses.
 struct ElectricalParams {
-  double torque_constant_Nm_A = 0.73;       // k_t = T / I_q (3 x back-EMF constant)
+  double torque_constant_Nm_A = 0.73;       // k_t = T / I_q (3 x back-EMF constant) at torque_constant_ref_K
+  double torque_constant_ref_K = units::celsiusToK(20.0);  // magnet temperature of k_t, I_ch, B̂
+  double magnet_remanence_tempco_per_K = -0.0011;          // α_Br of the NdFeB grade (reversible)
   double characteristic_current_A = 150.0; // I_ch = ψ/L: field-weakening current scale
   int pole_pairs = 6;
   double phase_resistance_20C_ohm = 2.5e-3; // DC phase resistance at 20 °C
@@ -82,6 +84,8 @@ struct ThermalParams {
   double G_rotor_stator_W_K = 2.5;
   double G_rotor_housing_W_K = 1.0;
   double G_housing_coolant_W_K = 120.0;
+  double G_housing_engine_W_K = 35.0;       // housing flange -> flywheel housing (engine)
+  double G_rotor_crank_W_K = 4.0;           // rotor hub -> crankshaft flange (engine)
 };
 
 /// Thermal derating of the torque limits: between `start` and `continuous` the live limit goes

@@ -66,7 +66,7 @@ double EmsModel::batteryBound(double T, double P_avail, const EmsInputs& in) con
   // electric power the pack sees for crank torque x: drawn (> 0) motoring, returned (> 0) generating
   const double sign = T > 0.0 ? 1.0 : -1.0;
   auto pack_W = [&](double x) {
-    return sign * em_limits_->dcPower_W(x, w, in.dc_voltage_V, in.em_winding_T_K);
+    return sign * em_limits_->dcPower_W(x, w, in.dc_voltage_V, in.em_winding_T_K, in.em_magnet_T_K);
   };
   if (pack_W(T) <= P_avail) return T;
   double ok = 0.0, over = T;  // |x| at or below ok fits, at over does not

@@ -66,7 +66,7 @@ class EmLimitModel {
   /// DC power [W] (> 0 drawn) of crank torque T [Nm] at crank speed [rad/s], voltage [V] and
   /// winding temperature [K]: the e-machine's own loss model (machine, inverter, ratio stage).
   virtual double dcPower_W(double crank_torque_Nm, double crank_speed_rad_s, double dc_voltage_V,
-                           double winding_T_K) const = 0;
+                           double winding_T_K, double magnet_T_K) const = 0;
 };
 
 enum class Mode : uint8_t { EngineOnly = 0, Boost = 1, Regen = 2, LoadPointShift = 3, Stopped = 4, Cranking = 5 };

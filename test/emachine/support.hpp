@@ -53,23 +53,30 @@ inline std::vector<VempRow> readVempByHand(const std::string& path) {
 
 constexpr double kNom = 48.0;
 
-// Motoring / generating system efficiency (machine + inverter, EM shaft) at EM speed w, torque T.
-inline double efficiency(const LossModel& lm, double T, double w, double V, double Tw) {
-  const LossBreakdown b = lm.evaluate(T, w, V, Tw);
+// Magnet temperature of the datasheet k_t (config/emachine.yaml electrical/torque_constant_ref_K):
+// the magnet flux factor is 1 there and the hand formulas hold with the YAML's k_t.
+constexpr double kMagnetRef_K = 293.15;
+
+// Motoring / generating system efficiency (machine + inverter, EM shaft) at EM speed w, torque T,
+// winding and magnet temperatures.
+inline double efficiency(const LossModel& lm, double T, double w, double V, double Tw, double Tm) {
+  const LossBreakdown b = lm.evaluate(T, w, V, Tw, Tm);
   const double P = T * w;
   return P > 0 ? P / (P + b.total()) : (-P - b.total()) / (-P);
 }
 
-// Nodal equations of the 4-node network written out by hand (W, S, R, H) and solved by Gaussian
-// elimination with partial pivoting in this test.
-inline std::vector<double> handSteadyState(const ThermalParams& t, const double q[4], double Tc) {
+// Nodal equations of the 4-node network written out by hand (W, S, R, H; coolant T_c on the
+// housing, engine T_e on the housing and the rotor) and solved by Gaussian elimination with
+// partial pivoting in this test.
+inline std::vector<double> handSteadyState(const ThermalParams& t, const double q[4], double Tc, double Te) {
   const double gws = t.G_winding_stator_W_K, gwh = t.G_winding_housing_W_K, gsh = t.G_stator_housing_W_K,
-               grs = t.G_rotor_stator_W_K, grh = t.G_rotor_housing_W_K, ghc = t.G_housing_coolant_W_K;
+               grs = t.G_rotor_stator_W_K, grh = t.G_rotor_housing_W_K, ghc = t.G_housing_coolant_W_K,
+               ghe = t.G_housing_engine_W_K, gre = t.G_rotor_crank_W_K;
   double A[4][5] = {
       {gws + gwh, -gws, 0.0, -gwh, q[0]},
       {-gws, gws + gsh + grs, -grs, -gsh, q[1]},
-      {0.0, -grs, grs + grh, -grh, q[2]},
-      {-gwh, -gsh, -grh, gwh + gsh + grh + ghc, q[3] + ghc * Tc},
+      {0.0, -grs, grs + grh + gre, -grh, q[2] + gre * Te},
+      {-gwh, -gsh, -grh, gwh + gsh + grh + ghc + ghe, q[3] + ghc * Tc + ghe * Te},
   };
   for (int c = 0; c < 4; ++c) {
     int piv = c;
@@ -90,17 +97,20 @@ inline std::vector<double> handSteadyState(const ThermalParams& t, const double 
   return x;
 }
 
-// RK4 of C dx/dt = q + g Tc - G x, written out from the same nodal equations.
-inline void rk4Network(const ThermalParams& t, const double q[4], double Tc, double h, int n, double x[4]) {
+// RK4 of C dx/dt = q + g_c Tc + g_e Te - G x, written out from the same nodal equations.
+inline void rk4Network(const ThermalParams& t, const double q[4], double Tc, double Te, double h, int n,
+                       double x[4]) {
   const double C[4] = {t.C_winding_J_K, t.C_stator_J_K, t.C_rotor_J_K, t.C_housing_J_K};
   auto f = [&](const double* y, double* d) {
     const double W = y[0], S = y[1], R = y[2], H = y[3];
     d[0] = (q[0] - t.G_winding_stator_W_K * (W - S) - t.G_winding_housing_W_K * (W - H)) / C[0];
     d[1] = (q[1] + t.G_winding_stator_W_K * (W - S) - t.G_stator_housing_W_K * (S - H) -
             t.G_rotor_stator_W_K * (S - R)) / C[1];
-    d[2] = (q[2] + t.G_rotor_stator_W_K * (S - R) - t.G_rotor_housing_W_K * (R - H)) / C[2];
+    d[2] = (q[2] + t.G_rotor_stator_W_K * (S - R) - t.G_rotor_housing_W_K * (R - H) +
+            t.G_rotor_crank_W_K * (Te - R)) / C[2];
     d[3] = (q[3] + t.G_winding_housing_W_K * (W - H) + t.G_stator_housing_W_K * (S - H) +
-            t.G_rotor_housing_W_K * (R - H) - t.G_housing_coolant_W_K * (H - Tc)) / C[3];
+            t.G_rotor_housing_W_K * (R - H) - t.G_housing_coolant_W_K * (H - Tc) +
+            t.G_housing_engine_W_K * (Te - H)) / C[3];
   };
   for (int k = 0; k < n; ++k) {
     double k1[4], k2[4], k3[4], k4[4], y[4];

@@ -75,7 +75,7 @@ TEST(EMachineLosses, CopperResistanceAndCurrentsByHand) {
   EXPECT_NEAR(lm.phaseResistance(293.15, 250.0), R20 * 1.25, 1e-15);  // (250/500)^2
   // Standstill (cranking torque): I = T/k_t, P_cu = 3 I^2 R(T_w), no iron, no switching at V=0.
   const double Tw = celsiusToK(60.0);
-  LossBreakdown b = lm.evaluate(150.0, 0.0, kNom, Tw);
+  LossBreakdown b = lm.evaluate(150.0, 0.0, kNom, Tw, kMagnetRef_K);
   const double I = 150.0 / 0.73;
   EXPECT_NEAR(b.i_A, I, 1e-12);
   EXPECT_NEAR(b.copper_W, 3.0 * I * I * R20 * (1.0 + 0.00393 * (Tw - 293.15)), 1e-9);
@@ -86,8 +86,8 @@ TEST(EMachineLosses, CopperResistanceAndCurrentsByHand) {
   // Field weakening: w_v = 48/sqrt(6)/(0.73/3) = 80.53 rad/s. Above it I_d = -150 (1 - w_v/w),
   // B = 1.5 w_v/w; at w = 2 w_v: I_d = -75 A, B = 0.75 T.
   const double wv = 48.0 / std::sqrt(6.0) / (0.73 / 3.0);
-  EXPECT_NEAR(lm.voltageLimitSpeed(kNom), wv, 1e-9);
-  b = lm.evaluate(0.0, 2.0 * wv, kNom, Tw);
+  EXPECT_NEAR(lm.voltageLimitSpeed(kNom, kMagnetRef_K), wv, 1e-9);
+  b = lm.evaluate(0.0, 2.0 * wv, kNom, Tw, kMagnetRef_K);
   EXPECT_NEAR(b.i_d_A, -75.0, 1e-9);
   const double f = 6.0 * 2.0 * wv / (2.0 * M_PI);
   EXPECT_NEAR(b.frequency_Hz, f, 1e-9);
@@ -96,26 +96,26 @@ TEST(EMachineLosses, CopperResistanceAndCurrentsByHand) {
   EXPECT_NEAR(b.bearing_W, 0.1 * 2.0 * wv, 1e-12);
   EXPECT_NEAR(b.windage_W, 40.0 * std::pow(2.0 * wv / 509.4179, 3), 1e-6);
   // Below w_v: full flux, no d-current.
-  b = lm.evaluate(50.0, 0.5 * wv, kNom, Tw);
+  b = lm.evaluate(50.0, 0.5 * wv, kNom, Tw, kMagnetRef_K);
   EXPECT_EQ(b.i_d_A, 0.0);
   EXPECT_EQ(b.flux_ratio, 1.0);
   // Voltage-limited region: at 15 kW and 48 V the current is at least 15 kW/(3 x 19.6 V) = 255 A.
   const double w3 = rpmToRadps(3000.0);
-  b = lm.evaluate(15000.0 / w3, w3, kNom, Tw);
+  b = lm.evaluate(15000.0 / w3, w3, kNom, Tw, kMagnetRef_K);
   EXPECT_NEAR(b.i_A, 15000.0 / (3.0 * 48.0 / std::sqrt(6.0)), 1e-9);
 }
 
 TEST(EMachineLosses, EfficiencyInThePublishedRangeAndGeneratingReturnsLessThanMechanical) {
   const EMachineParams p = yamlParams();
   const LossModel lm(p.electrical, p.iron, p.mechanical, p.inverter);
-  const double Tw = celsiusToK(90.0);
+  const double Tw = celsiusToK(90.0), Tm = celsiusToK(90.0);  // warm machine, magnets at the winding
   // Peak over the peak envelope (motoring), machine + inverter.
   const EMachineModel m(p, "config/emachine.yaml");
   double best = 0, bn = 0, bt = 0;
   for (double n = 200; n <= 4865; n += 25)
     for (double fr = 0.02; fr <= 1.0001; fr += 0.02) {
       const double w = rpmToRadps(n), T = fr * m.envelope().peakDrive(w, kNom);
-      const double e = efficiency(lm, T, w, kNom, Tw);
+      const double e = efficiency(lm, T, w, kNom, Tw, Tm);
       if (e > best) { best = e; bn = n; bt = T; }
     }
   std::printf("peak motoring efficiency %.4f at %.0f rpm EM, %.1f Nm (at the crank x0.98: %.4f)\n", best, bn,
@@ -128,7 +128,7 @@ TEST(EMachineLosses, EfficiencyInThePublishedRangeAndGeneratingReturnsLessThanMe
   struct Pt { double n, T, lo, hi; };
   for (const Pt& pt : {Pt{1200, 60, 0.85, 0.95}, Pt{2000, 50, 0.85, 0.95}, Pt{3000, 30, 0.80, 0.95},
                        Pt{1200, -100, 0.85, 0.95}, Pt{3000, -47.7, 0.85, 0.95}, Pt{651, 220, 0.80, 0.93}}) {
-    const double e = efficiency(lm, pt.T, rpmToRadps(pt.n), kNom, Tw);
+    const double e = efficiency(lm, pt.T, rpmToRadps(pt.n), kNom, Tw, Tm);
     std::printf("  %5.0f rpm EM %7.1f Nm: efficiency %.4f\n", pt.n, pt.T, e);
     EXPECT_GT(e, pt.lo) << pt.n << " " << pt.T;
     EXPECT_LT(e, pt.hi) << pt.n << " " << pt.T;
@@ -137,7 +137,7 @@ TEST(EMachineLosses, EfficiencyInThePublishedRangeAndGeneratingReturnsLessThanMe
   for (double n : {800.0, 1500.0, 3000.0, 4800.0})
     for (double fr : {0.1, 0.5, 1.0}) {
       const double w = rpmToRadps(n), T = fr * m.envelope().peakRecup(w, kNom);
-      const LossBreakdown b = lm.evaluate(T, w, kNom, Tw);
+      const LossBreakdown b = lm.evaluate(T, w, kNom, Tw, Tm);
       const double Pm = T * w, Pdc = Pm + b.total();
       EXPECT_LT(Pm, Pdc);
       EXPECT_GT(b.total(), 0.0);
@@ -145,23 +145,25 @@ TEST(EMachineLosses, EfficiencyInThePublishedRangeAndGeneratingReturnsLessThanMe
   // Drag at zero torque (a P1 machine cannot be decoupled): reported.
   for (double n : {1200.0, 2000.0, 3000.0, 4000.0})
     std::printf("  zero-torque drag at %.0f rpm EM: %.0f W\n", n,
-                lm.evaluate(0.0, rpmToRadps(n), kNom, celsiusToK(25.0)).total());
+                lm.evaluate(0.0, rpmToRadps(n), kNom, celsiusToK(25.0), celsiusToK(25.0)).total());
 }
 
 TEST(EMachineModel, EnergyBalanceClosesOverAVariedTransient) {
   EMachineModel m(yamlParams(), "config/emachine.yaml");
   m.reset(celsiusToK(0.0));
   EMachineInputs in;
-  double W = 0, Edc = 0, Ecu = 0;
+  double W = 0, Edc = 0, Ecu = 0, Qe = 0;
   for (int k = 0; k < 200000; ++k) {  // 2000 s at 0.01 s
     const double t = 0.01 * k;
     in.crank_speed_rad_s = rpmToRadps(600.0 + 900.0 * (0.5 + 0.5 * std::sin(0.013 * t)));
     in.torque_request_Nm = 500.0 * std::sin(0.05 * t) + (k % 997 == 0 ? 2000.0 : 0.0);
     in.dc_voltage_V = 47.0 + 4.0 * std::sin(0.007 * t);
     in.coolant_T_K = celsiusToK(0.0 + 0.03 * t);
+    in.engine_T_K = celsiusToK(0.0 + 0.045 * t);  // the engine warms faster than the LT circuit
     m.step(0.01, in);
     const auto& o = m.outputs();
     W += o.torque_Nm * o.crank_speed_rad_s * 0.01;
+    Qe += o.engine_heat_W * 0.01;
     Edc += o.dc_power_W * 0.01;
     Ecu += o.loss.copper_W * 0.01;
   }
@@ -177,12 +179,17 @@ TEST(EMachineModel, EnergyBalanceClosesOverAVariedTransient) {
   EXPECT_NEAR(o.dc_drawn_J + o.dc_returned_J, o.dc_J, 1e-6);
   const double losses = o.copper_J + o.iron_J + o.rotor_J + o.mechanical_J + o.inverter_J + o.ratio_J;
   EXPECT_NEAR(o.dc_J, o.mech_motoring_J + o.mech_generating_J + losses, 1e-9 * o.dc_drawn_J);
-  // Heat: machine losses = heat to coolant (minus inverter) + stored; residual to rounding.
+  // Heat: machine losses + heat from the engine = heat to coolant (minus inverter) + stored;
+  // residual to rounding.
   const double scale = o.dc_drawn_J - o.dc_returned_J;
-  std::printf("2000 s: drawn %.4g J, returned %.4g J, heat to coolant %.4g J, stored %.4g J, residual %.3g J\n",
-              o.dc_drawn_J, o.dc_returned_J, o.heat_to_coolant_J, o.stored_change_J, o.energy_residual_J);
+  std::printf("2000 s: drawn %.4g J, returned %.4g J, heat to coolant %.4g J, from the engine %.4g J, stored %.4g J, "
+              "residual %.3g J\n",
+              o.dc_drawn_J, o.dc_returned_J, o.heat_to_coolant_J, o.heat_from_engine_J, o.stored_change_J,
+              o.energy_residual_J);
+  EXPECT_NEAR(o.heat_from_engine_J, Qe, 1e-9 * std::abs(Qe));
+  EXPECT_NE(o.heat_from_engine_J, 0.0);
   EXPECT_LT(std::abs(o.energy_residual_J), 1e-10 * scale);
-  EXPECT_NEAR(o.copper_J + o.iron_J + o.rotor_J + o.mechanical_J,
+  EXPECT_NEAR(o.copper_J + o.iron_J + o.rotor_J + o.mechanical_J + o.heat_from_engine_J,
               o.heat_to_coolant_J - o.inverter_J + o.stored_change_J, 1e-10 * scale);
   EXPECT_GT(o.ratio_J, 0.0);
 }

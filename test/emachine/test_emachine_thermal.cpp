@@ -15,7 +15,7 @@ TEST(EMachineThermal, OneNodeLimitIsTheAnalyticExponential) {
   g << 0.0, 0.0, 0.0, 80.0;
   ThermalNetwork::Mat G = ThermalNetwork::Mat::Zero();
   for (int i = 0; i < 3; ++i) G(i, 3) = G(3, i) = 1e6;
-  const ThermalNetwork net(C, G, g);
+  const ThermalNetwork net(C, G, g, ThermalNetwork::Vec::Zero());
   ThermalNetwork::Vec q;
   q << 300.0, 200.0, 100.0, 0.0;  // 600 W held
   const double Tc = 330.0, T0 = 290.0, Ctot = 5003.0;
@@ -24,7 +24,7 @@ TEST(EMachineThermal, OneNodeLimitIsTheAnalyticExponential) {
   for (int k = 0; k < 2000; ++k) {
     const double h = (k % 3 == 0) ? 0.37 : 1.3;  // uneven steps: exact for any h
     const ThermalNetwork::Vec xs = x;
-    net.step(h, q, Tc, x, xi);
+    net.step(h, q, Tc, 0.0, x, xi);  // no engine link: its temperature plays no part
     t += h;
     Q += 80.0 * (xi(3) - Tc * h);
     const double ref = Tc + 600.0 / 80.0 + (T0 - Tc - 600.0 / 80.0) * std::exp(-80.0 * t / Ctot);
@@ -41,26 +41,30 @@ TEST(EMachineThermal, SteadyStateIsTheHandSolvedNetworkAndTransientMatchesRk4) {
   const EMachineModel m(p, "config/emachine.yaml");
   const ThermalNetwork& net = m.network();
   const double q[4] = {1017.0, 107.0, 21.0, 7.0};  // continuous corner, hot (README)
-  const double Tc = celsiusToK(65.0);
-  const auto hand = handSteadyState(p.thermal, q, Tc);
+  const double Tc = celsiusToK(65.0), Te = celsiusToK(90.0);  // LT coolant, warm engine
+  const auto hand = handSteadyState(p.thermal, q, Tc, Te);
   ThermalNetwork::Vec qv;
   qv << q[0], q[1], q[2], q[3];
-  const ThermalNetwork::Vec ss = net.steadyState(qv, Tc);
+  const ThermalNetwork::Vec ss = net.steadyState(qv, Tc, Te);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(ss(i), hand[i], 1e-9) << i;
-  std::printf("steady state at 65 degC coolant, 1017/107/21/7 W: W %.1f S %.1f R %.1f H %.1f degC\n",
+  std::printf("steady state at 65 degC coolant, 90 degC engine, 1017/107/21/7 W: W %.1f S %.1f R %.1f H %.1f degC\n",
               hand[0] - 273.15, hand[1] - 273.15, hand[2] - 273.15, hand[3] - 273.15);
-  // Long exact step lands on it; energy balance: sum q = G_HC (T_H - Tc) in steady state.
+  // Long exact step lands on it; energy balance in steady state: losses + heat from the engine
+  // (housing flange and rotor hub) = G_HC (T_H - Tc).
   ThermalNetwork::Vec x = ThermalNetwork::Vec::Constant(Tc), xi;
-  net.step(1e6, qv, Tc, x, xi);
+  net.step(1e6, qv, Tc, Te, x, xi);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(x(i), hand[i], 1e-8);
-  EXPECT_NEAR(p.thermal.G_housing_coolant_W_K * (hand[3] - Tc), q[0] + q[1] + q[2] + q[3], 1e-9);
+  const double from_engine =
+      p.thermal.G_housing_engine_W_K * (Te - hand[3]) + p.thermal.G_rotor_crank_W_K * (Te - hand[2]);
+  EXPECT_GT(from_engine, 0.0);  // the engine is hotter than housing and rotor here
+  EXPECT_NEAR(p.thermal.G_housing_coolant_W_K * (hand[3] - Tc), q[0] + q[1] + q[2] + q[3] + from_engine, 1e-9);
   // Transient: 0.01 s exact steps vs RK4 with 1 ms steps from a cold start at 25 degC, 65 degC coolant.
   double y[4];
   for (double& v : y) v = celsiusToK(25.0);
   x = ThermalNetwork::Vec::Constant(celsiusToK(25.0));
   for (int block = 0; block < 6; ++block) {  // 6 x 100 s
-    rk4Network(p.thermal, q, Tc, 1e-3, 100000, y);
-    for (int k = 0; k < 10000; ++k) net.step(0.01, qv, Tc, x, xi);
+    rk4Network(p.thermal, q, Tc, Te, 1e-3, 100000, y);
+    for (int k = 0; k < 10000; ++k) net.step(0.01, qv, Tc, Te, x, xi);
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(x(i), y[i], 1e-7) << "t=" << (block + 1) * 100 << " node " << i;
   }
 }
@@ -101,6 +105,7 @@ TEST(EMachineDerating, SustainedPeakGenerationDeratesWhenTheWindingReachesTheThr
   EMachineInputs in;
   in.crank_speed_rad_s = rpmToRadps(700.0);
   in.coolant_T_K = Tc;
+  in.engine_T_K = Tc;
   in.torque_request_Nm = -1e4;
   const CrankLimits cold = m.limits(in.crank_speed_rad_s, kNom, Tc, Tc);
   // Reference: RK4 (1 ms) of the hand-written network, losses of the peak torque at the current
@@ -109,10 +114,10 @@ TEST(EMachineDerating, SustainedPeakGenerationDeratesWhenTheWindingReachesTheThr
   const double T_em = cold.min_peak * 0.98 / 2.0;
   double y[4] = {Tc, Tc, Tc, Tc}, t_ref = -1.0;
   for (int k = 0; k < 600000 && t_ref < 0; ++k) {
-    const LossBreakdown b = m.lossModel().evaluate(T_em, w_em, kNom, y[0]);
+    const LossBreakdown b = m.lossModel().evaluate(T_em, w_em, kNom, y[0], y[2]);
     const double q[4] = {b.copper_W, b.iron_W, b.rotor_W + b.windage_W, b.bearing_W};
     const double before = y[0];
-    rk4Network(p.thermal, q, Tc, 1e-3, 1, y);
+    rk4Network(p.thermal, q, Tc, in.engine_T_K, 1e-3, 1, y);
     if (before < p.derating.winding_start_K && y[0] >= p.derating.winding_start_K)
       t_ref = (k + (p.derating.winding_start_K - before) / (y[0] - before)) * 1e-3;
   }
@@ -173,7 +178,7 @@ TEST(EMachineDerating, MotoringLimitFallsOnlyAtTheContinuousThreshold) {
   m.reset(Tc);
   EMachineInputs in;
   in.crank_speed_rad_s = rpmToRadps(600.0);
-  in.coolant_T_K = Tc;
+  in.coolant_T_K = in.engine_T_K = Tc;
   in.torque_request_Nm = 1e4;
   EXPECT_NEAR(m.outputs().limits.max_peak, 2.0 * 0.98 * 220.0, 1e-9);  // reset: standstill
   double t = 0, t_fall = -1, T_at_fall = 0;
@@ -208,7 +213,7 @@ TEST(EMachineDerating, VectoContinuousPointIsSustainableAndOverloadTimeIsReprodu
   m.reset(Tc);
   EMachineInputs in;
   in.crank_speed_rad_s = 15000.0 / 220.0 / 2.0;  // 651.09 rpm EM
-  in.coolant_T_K = Tc;
+  in.coolant_T_K = in.engine_T_K = Tc;           // bench: the mounting flange at the coolant temperature
   in.torque_request_Nm = -2.0 * 220.0 / 0.98;     // continuous generating, 15 kW
   for (int k = 0; k < 1200000; ++k) m.step(0.01, in);  // 12000 s: steady (slowest mode ~1700 s)
   const auto o = m.outputs();

@@ -53,7 +53,9 @@ class Machine : public EmLimitModel {
     max_Nm = c.max_live;
     min_Nm = c.min_live;
   }
-  double dcPower_W(double T, double w, double V, double Tw) const override { return m_.dcPower(T, w, V, Tw); }
+  double dcPower_W(double T, double w, double V, double Tw, double Tm) const override {
+    return m_.dcPower(T, w, V, Tw, Tm);
+  }
 
  private:
   const emachine::EMachineModel& m_;

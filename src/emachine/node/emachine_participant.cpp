@@ -50,7 +50,13 @@ void EMachineParticipant::step(const ros::Time& t, double dt_s) {
   in.torque_request_Nm = cmd.em_torque_request_nm;
   in.crank_speed_rad_s = cmd.engine_speed_rad_s;
   in.dc_voltage_V = battery_->at(t).terminal_voltage_v;
-  in.coolant_T_K = cooling_ ? cooling_->at(t).coolant_lt_temperature_k : ambient_T_K_;
+  if (cooling_) {
+    const auto& c = cooling_->at(t);
+    in.coolant_T_K = c.coolant_lt_temperature_k;
+    in.engine_T_K = c.metal_temperature_k;  // flywheel housing and crankshaft: the engine structure
+  } else {
+    in.coolant_T_K = in.engine_T_K = ambient_T_K_;
+  }
   model_->step(dt_s, in);
 }
 
@@ -75,6 +81,7 @@ void EMachineParticipant::publishOutputs(const ros::Time& t) {
   s.phase_current_a = o.phase_current_A;
   s.housing_temperature_k = o.housing_T_K;
   s.lt_heat_w = o.lt_heat_W;
+  s.engine_heat_w = o.engine_heat_W;
   s.copper_loss_w = o.loss.copper_W;
   s.iron_loss_w = o.loss.iron_W;
   s.rotor_loss_w = o.loss.rotor_W;
@@ -98,6 +105,7 @@ void EMachineParticipant::publishOutputs(const ros::Time& t) {
   s.inverter_loss_energy_j = o.inverter_J;
   s.ratio_loss_energy_j = o.ratio_J;
   s.heat_to_coolant_energy_j = o.heat_to_coolant_J;
+  s.heat_from_engine_energy_j = o.heat_from_engine_J;
   s.stored_energy_change_j = o.stored_change_J;
   s.energy_residual_j = o.energy_residual_J;
   state_pub_.publish(boost::make_shared<hybrid_bus_twin::EMachineState>(s));

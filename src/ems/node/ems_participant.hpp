@@ -56,7 +56,9 @@ class MachineLimitModel : public EmLimitModel {
     max_Nm = c.max_live;
     min_Nm = c.min_live;
   }
-  double dcPower_W(double T, double w, double V, double T_w) const override { return m_->dcPower(T, w, V, T_w); }
+  double dcPower_W(double T, double w, double V, double T_w, double T_m) const override {
+    return m_->dcPower(T, w, V, T_w, T_m);
+  }
 
  private:
   std::unique_ptr<emachine::EMachineModel> m_;
