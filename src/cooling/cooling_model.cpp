@@ -105,6 +105,7 @@ void CoolingModel::checkFinite(const CoolingInputs& in) const {
   chk(in.ambient_T_K, "ambient_T_K");
   chk(in.ambient_p_Pa, "ambient_p_Pa");
   chk(in.lt_heat_W, "lt_heat_W");
+  chk(in.em_engine_heat_W, "em_engine_heat_W");
   chk(in.fan_demand, "fan_demand");
   chk(in.cabin_heat_demand_W, "cabin_heat_demand_W");
   chk(in.cabin_T_K, "cabin_T_K");
@@ -215,7 +216,7 @@ void CoolingModel::solveTemperatures(const CoolingInputs& in, SubstepState& s) {
   A(1, 1) = C_c_ / h + G_mc + s.G_ht + s.g_h;
   A(1, 2) = -s.G_ht * s.pre;
   A(2, 2) = C_l_ / h + s.G_lt;
-  b(0) = C_m_ / h * (T_m_ - Ta) + in.engine_heat_W;
+  b(0) = C_m_ / h * (T_m_ - Ta) + in.engine_heat_W - in.em_engine_heat_W;
   b(1) = C_c_ / h * (T_c_ - Ta) - s.q_h_const + in.aux_heater_heat_W;
   b(2) = C_l_ / h * (T_l_ - Ta) + in.lt_heat_W;
   s.th = A.partialPivLu().solve(b);
@@ -294,14 +295,16 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.lt_pump_energy_J += s.lt_in_W * h;
   o.engine_heat_J += in.engine_heat_W * h;
   o.lt_heat_J += in.lt_heat_W * h;
+  o.em_engine_heat_W = in.em_engine_heat_W;
+  o.em_engine_heat_J += in.em_engine_heat_W * h;
   o.aux_heater_J += in.aux_heater_heat_W * h;
   o.radiator_ht_J += s.Q_ht * h;
   o.radiator_lt_J += s.Q_lt * h;
   o.heater_J += s.Q_h * h;
   o.surface_loss_J += s.Q_s * h;
   o.stored_change_J = C_m_ * (T_m_ - T_m0_) + C_c_ * (T_c_ - T_c0_) + C_l_ * (T_l_ - T_l0_);
-  o.energy_residual_J = o.engine_heat_J + o.lt_heat_J + o.aux_heater_J - o.radiator_ht_J - o.radiator_lt_J - o.heater_J -
-                        o.surface_loss_J - o.stored_change_J;
+  o.energy_residual_J = o.engine_heat_J + o.lt_heat_J + o.aux_heater_J - o.em_engine_heat_J - o.radiator_ht_J -
+                        o.radiator_lt_J - o.heater_J - o.surface_loss_J - o.stored_change_J;
 }
 
 }  // namespace hbt::cooling

@@ -8,7 +8,8 @@
 // engagement [-], ω_lt LT pump speed (clutch output, before the input-speed cap) [rad/s].
 //
 // Thermal network (Q̇ in W, C in J/K, G in W/K, T_a ambient):
-//   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_s (T_m - T_a)
+//   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_s (T_m - T_a) - Q̇_em   (Q̇_em: heat conducted into
+//                 the P1 e-machine's housing and rotor, which its LT heat then carries)
 //   C_c dT_c/dt = G_mc (T_m - T_c) - Q̇_rad,HT - Q̇_heater + Q̇_aux   (Q̇_aux: fuel-fired heater, hvac)
 //   C_l dT_l/dt = Q̇_LT,in - Q̇_rad,LT
 //   C_m = m_metal c_metal + m_oil c_oil,  C_c = ρ V c (HT coolant),  C_l = ρ V_lt c + C_components
@@ -64,6 +65,8 @@ struct CoolingInputs {
   double ambient_T_K = 298.15;         // [K]
   double ambient_p_Pa = units::kStandardAtmosphere_Pa;      // [Pa]
   double lt_heat_W = 0.0;              // e-machine + power electronics losses [W] (0 baseline)
+  double em_engine_heat_W = 0.0;       // heat the P1 e-machine draws from the engine metal through
+                                       // its flange and rotor hub [W] (> 0 out of the metal; 0 baseline)
   double fan_demand = 0.0;             // [-] extra fan request 0..1 (HVAC)
   // Cabin heating by the hvac participant (hvac:=on): its demand and cabin temperature replace
   // the balance-point demand of heater/ (cabin_from_hvac), and its fuel-fired heater's heat
@@ -94,6 +97,7 @@ struct CoolingOutputs {
   // Cumulative since reset [J].
   double fan_energy_J = 0.0, fan_drive_energy_J = 0.0, pump_energy_J = 0.0, lt_pump_energy_J = 0.0;
   double engine_heat_J = 0.0, lt_heat_J = 0.0, aux_heater_J = 0.0;
+  double em_engine_heat_W = 0.0, em_engine_heat_J = 0.0;  // engine metal -> e-machine [W], [J]
   double radiator_ht_J = 0.0, radiator_lt_J = 0.0, heater_J = 0.0, surface_loss_J = 0.0;
   double stored_change_J = 0.0;        // Σ C (T - T_0)
   double energy_residual_J = 0.0;      // in - out - stored change (ideally 0)

@@ -72,6 +72,8 @@ void CoolingParticipant::step(const ros::Time& t, double dt_s) {
     const auto& m = emachine_->at(t);
     now.lt_heat_J = m.heat_to_coolant_energy_j;
     point.lt_heat_W = m.lt_heat_w;
+    now.em_engine_heat_J = m.heat_from_engine_energy_j;  // out of the engine metal
+    point.em_engine_heat_W = m.engine_heat_w;
   }
   if (hvac_) {  // the cabin's demand, the fuel-fired heater's heat (hvac:=on)
     const auto& a = hvac_->at(t);
@@ -115,12 +117,14 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.surface_loss_w = o.surface_loss_W;
   s.engine_heat_w = last_in_.engine_heat_W;
   s.lt_heat_w = last_in_.lt_heat_W;
+  s.em_engine_heat_w = last_in_.em_engine_heat_W;
   s.fan_energy_j = o.fan_energy_J;
   s.fan_drive_energy_j = o.fan_drive_energy_J;
   s.pump_energy_j = o.pump_energy_J;
   s.lt_pump_energy_j = o.lt_pump_energy_J;
   s.engine_heat_j = o.engine_heat_J;
   s.lt_heat_j = o.lt_heat_J;
+  s.em_engine_heat_j = o.em_engine_heat_J;
   s.radiator_ht_j = o.radiator_ht_J;
   s.radiator_lt_j = o.radiator_lt_J;
   s.heater_j = o.heater_J;
