@@ -109,6 +109,24 @@ TEST(OilNode, CoolerHoldsItsTemperatureAndTakesTheRest) {
   EXPECT_NEAR(n.balanceResidual_J(), 0.0, 1e-9 * n.heatIn_J());
 }
 
+TEST(OilNode, CoolerOpensWithinAStepAtTheClosedFormTime) {
+  // Warm-up from 25 degC at 6 kW reaches 80 degC at t* = τ ln((T0 - T_eq)/(T_open - T_eq));
+  // coarse 5 s steps put t* inside a step. From t* on: cooler = (P - UA ΔT_open)(t - t*).
+  OilUnitParams p = VehicleParams{}.driveline_oil.gearbox;
+  OilThermalNode n(p);
+  const double Ta = kC0 + 25.0, P = 6000.0, dt = 5.0, t_end = 2000.0;
+  const double C = p.heat_capacity_J_K, UA = p.ua_ambient_W_K, tau = C / UA;
+  const double T_eq = Ta + P / UA, T_open = p.cooler_open_K;
+  const double t_star = tau * std::log((Ta - T_eq) / (T_open - T_eq));
+  ASSERT_GT(std::fmod(t_star, dt), 0.5);  // inside a step
+  n.reset(Ta);
+  for (int k = 0; k < static_cast<int>(t_end / dt + 0.5); ++k) n.step(dt, P * dt, Ta);
+  const double cooler = (P - UA * (T_open - Ta)) * (t_end - t_star);
+  EXPECT_NEAR(n.toCooler_J(), cooler, 1e-9 * P * t_end);
+  EXPECT_NEAR(n.toAmbient_J(), P * t_end - C * (T_open - Ta) - cooler, 1e-9 * P * t_end);
+  EXPECT_EQ(n.temperature_K(), T_open);
+}
+
 TEST(OilDrag, FactorIsOneAtTheReferenceAndFallsWithTemperature) {
   const OilUnitParams g = VehicleParams{}.driveline_oil.gearbox;
   EXPECT_EQ(oilDragFactor(g, g.reference_K), 1.0);
