@@ -84,6 +84,9 @@ void VehicleModel::setOilTemperatures(double gearbox_K, double axle_K) {
   gb_oil_.reset(gearbox_K);
   axle_oil_.reset(axle_K);
   oil_set_ = true;
+  out_.gearbox_oil_T_K = gearbox_K;
+  out_.axle_oil_T_K = axle_K;
+  out_.gearbox_drag_factor = oilDragFactor(p_.driveline_oil.gearbox, gearbox_K);
 }
 
 double VehicleModel::gearboxOilHeat_J() const {

@@ -125,6 +125,8 @@ void VehicleParticipant::configure() {
   model_->reset(profile_.speedAt(0.0), 0, p.driveline.idle_speed_rad_s, 0.0);
   if (cosim::scenarioWarmStart(nh_))  // a bus mid-shift: driveline_oil/*/warm_start_K
     model_->setOilTemperatures(p.driveline_oil.gearbox.warm_start_K, p.driveline_oil.axle.warm_start_K);
+  else  // a morning start: the oils at the ambient
+    model_->setOilTemperatures(ambient_T_K_, ambient_T_K_);
   declareTopics();
   readWarningThresholds(warnings_);
   warnings_.validate(configFile());
