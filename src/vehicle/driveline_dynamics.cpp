@@ -35,13 +35,14 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
   // (VECTO: the map applies at the gearbox input; in 1C that is the turbine, so the drag acts on
   // the turbine side; locked and shifting: the input shaft turns with the crank). In neutral
   // the forward clutch is open and the geartrain stands: only the pump-side spin loss
-  // (oil pump + open-clutch drag + free turbine) acts at the pump speed.
+  // (oil pump + open-clutch drag + free turbine) acts at the pump speed. Both are spin losses:
+  // × the cold-oil factor φ(T_oil) of the gearbox oil (exactly 1 at its reference temperature).
   if (gear_state_.mode == DriveMode::Neutral) {
-    r.T_drag = p_.driveline.neutral_drag_torque_Nm * smoothSign(w);
+    r.T_drag = c.drag_factor * p_.driveline.neutral_drag_torque_Nm * smoothSign(w);
   } else if (gear_state_.mode == DriveMode::Converter) {
-    r.T_drag_in = gear_loss_map_.drag(w_in) * smoothSign(w_in);
+    r.T_drag_in = c.drag_factor * gear_loss_map_.drag(w_in) * smoothSign(w_in);
   } else {
-    r.T_drag = gear_loss_map_.drag(w) * smoothSign(w);
+    r.T_drag = c.drag_factor * gear_loss_map_.drag(w) * smoothSign(w);
   }
   if (gear_state_.mode != DriveMode::Neutral) {
     r.T_gload = p_.gearbox.gear_load_loss_factor[g - 1] * gear_loss_map_.load(w_in, T_in_est_) * smoothSign(w_in);
@@ -49,7 +50,7 @@ VehicleModel::Rates VehicleModel::rates(double v, double w, const StepConst& c, 
   }
   r.T_ret = ret_.torque(w_out) * smoothSign(w_out);
   const double sv = v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : static_cast<double>(dir));
-  r.F_roll = road_.rolling(c.grade) * sv;
+  r.F_roll = road_.rolling(c.grade, c.rr_factor) * sv;
   r.F_brake = c.F_brake * sv;
   r.F_aero = road_.aero(v, c.rho);
   r.F_grade = road_.gradeForce(c.grade);
@@ -99,7 +100,7 @@ bool VehicleModel::held(const StepConst& c, int* dir) const {
   if (gear_state_.mode == DriveMode::Locked) M += (engine_inertia_kg_m2_ + gearbox_input_inertia_kg_m2_) * k_[gear_state_.gear] * k_[gear_state_.gear];
   if (gear_state_.mode == DriveMode::Converter) M += gearbox_input_inertia_kg_m2_ * k_[1] * k_[1];
   const double F_other = r0.dv * M;
-  const double R = road_.rolling(c.grade) + c.F_brake;
+  const double R = road_.rolling(c.grade, c.rr_factor) + c.F_brake;
   if (std::fabs(F_other) <= R) return true;
   *dir = F_other > 0.0 ? 1 : -1;
   return false;

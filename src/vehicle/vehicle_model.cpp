@@ -24,6 +24,8 @@ VehicleModel::VehicleModel(const VehicleParams& p, const std::string& base_dir) 
   tc_ = TorqueConverter(resolve(base_dir, d.torque_converter_file), d.tc_reference_speed_rad_s);
   gear_loss_map_ = GearLossMap(resolve(base_dir, p_.gearbox.gear_loss_map_file));
   ret_ = RetarderLoss(resolve(base_dir, d.retarder_loss_file));
+  gb_oil_ = OilThermalNode(p_.driveline_oil.gearbox);
+  axle_oil_ = OilThermalNode(p_.driveline_oil.axle);
   shift_ = ShiftStrategy(p_.shift, d.gear_ratios, d.idle_speed_rad_s);
   const double m = p_.totalMass_kg();
   driver_ = Driver(p_.driver, m);
@@ -55,6 +57,7 @@ void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
   T_in_est_ = T_ax_est_ = 0.0;
   brake_force_ = accel_pedal_ = idle_integral_ = crank_accel_ = 0.0;
   hold_ = start_request_ = locking_ = false;
+  oil_set_ = false;
   last_dv_ = 0.0;
   s_target_ = s_;
   v_target_prev_ = v_;
@@ -73,6 +76,33 @@ void VehicleModel::reset(double v, int gear, double w_e, double distance_m) {
   out_.distance_m = s_;
   out_.gear = gear_state_.gear;
   out_.mode = gear_state_.mode;
+}
+
+void VehicleModel::setOilTemperatures(double gearbox_K, double axle_K) {
+  if (!(gearbox_K > 0.0) || !(axle_K > 0.0))
+    throw InputError("(vehicle oil temperatures)", "driveline_oil", "must be > 0 K");
+  gb_oil_.reset(gearbox_K);
+  axle_oil_.reset(axle_K);
+  oil_set_ = true;
+  out_.gearbox_oil_T_K = gearbox_K;
+  out_.axle_oil_T_K = axle_K;
+  out_.gearbox_drag_factor = oilDragFactor(p_.driveline_oil.gearbox, gearbox_K);
+}
+
+double VehicleModel::gearboxOilHeat_J() const {
+  const VehicleEnergy& e = out_.energy;
+  return e.gearbox_drag_J + e.gear_load_loss_J + e.tc_loss_J + e.shift_loss_J + e.retarder_J;
+}
+
+void VehicleModel::stepOilNodes(double dt, double gb_J0, double axle_J0, double T_amb) {
+  const double q_gb = gearboxOilHeat_J() - gb_J0, q_ax = out_.energy.axle_loss_J - axle_J0;
+  gb_oil_.step(dt, q_gb, T_amb);
+  axle_oil_.step(dt, q_ax, T_amb);
+  out_.gearbox_oil_heat_W = q_gb / dt;
+  out_.axle_oil_heat_W = q_ax / dt;
+  out_.gearbox_cooler_W = gb_oil_.lastCoolerPower_W();
+  out_.gearbox_oil_T_K = gb_oil_.temperature_K();
+  out_.axle_oil_T_K = axle_oil_.temperature_K();
 }
 
 double VehicleModel::auxPower(const VehicleInputs& in) const {
@@ -112,6 +142,8 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   if (!(dt > 0.0)) throw ModelDivergence("vehicle", "dt", "must be > 0");
 
   const double grade = grade_profile_.empty() ? in.road_grade : grade_profile_(s_);
+  if (!oil_set_) setOilTemperatures(in.ambient_T_K, in.ambient_T_K);  // cold start at ambient
+  const double gb_J0 = gearboxOilHeat_J(), axle_J0 = out_.energy.axle_loss_J;
   if (!in.driver_enabled) {
     brake_force_ = std::clamp(in.brake_pedal_cmd, 0.0, 1.0) * F_brake_max_;
     accel_pedal_ = std::clamp(in.accel_pedal_cmd, 0.0, 1.0);
@@ -153,6 +185,10 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   out_.applied_brake_force_N = c.F_brake;
   c.grade = grade;
   c.rho = road_.airDensity(in.ambient_T_K);
+  c.rr_factor = road_.rollingTemperatureFactor(in.ambient_T_K);
+  c.drag_factor = oilDragFactor(p_.driveline_oil.gearbox, gb_oil_.temperature_K());
+  out_.tyre_rr_factor = c.rr_factor;
+  out_.gearbox_drag_factor = c.drag_factor;
   const double v_start = v_, aux_start_J = out_.energy.aux_J, w_start = w_;
   const int n = std::max(1, static_cast<int>(std::ceil(dt / p_.numerics.max_substep_s - 1e-9)));
   for (int i = 0; i < n; ++i) substep(dt / n, c);
@@ -165,6 +201,7 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
   if (!in.engine_on)  // what the standing pump and compressor did not get this step is owed
     out_.energy.aux_deferred_J += std::max(
         0.0, P_def * dt - (out_.energy.steering_J + out_.energy.pneumatic_J - def_start_J));
+  stepOilNodes(dt, gb_J0, axle_J0, in.ambient_T_K);
 
   // 3. Driver and idle governor at t + dt: pedals, brake force and torque request.
   evaluateDriver(dt, in);
@@ -199,7 +236,9 @@ const VehicleOutputs& VehicleModel::step(double dt, const VehicleInputs& in) {
 void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
   const auto& d = p_.driveline;
   const double grade = grade_profile_.empty() ? in.road_grade : grade_profile_(s_);
-  StepConst c{0.0, in.em_torque_Nm, auxPower(in), 0.0, grade, road_.airDensity(in.ambient_T_K), true};
+  StepConst c{0.0, in.em_torque_Nm, auxPower(in), 0.0, grade, road_.airDensity(in.ambient_T_K), true,
+              road_.rollingTemperatureFactor(in.ambient_T_K),
+              oilDragFactor(p_.driveline_oil.gearbox, gb_oil_.temperature_K())};
   const Rates r = rates(v_, w_, c, 1);  // present loss torques (T_e = 0)
   const double T_min = in.engine_min_torque_Nm;
   // The demand is the whole crank torque (engine + e-machine): the driver's full pedal asks both
@@ -234,7 +273,7 @@ void VehicleModel::evaluateDriver(double dt, const VehicleInputs& in) {
     F_min = k * (tc_.turbineTorque(w_i, w_t) - T_side) - F_drag_out;
     F_max = std::max(F_max, F_min);
   }
-  const double F_road = road_.rolling(grade) + road_.aero(v_, c.rho) + road_.gradeForce(grade);
+  const double F_road = road_.rolling(grade, c.rr_factor) + road_.aero(v_, c.rho) + road_.gradeForce(grade);
   const double F_ff = M_eff * in.target_accel_m_s2 + F_road;
   const double F_stop = -M_eff * p_.driver.stop_decel_m_s2 + F_road;
 

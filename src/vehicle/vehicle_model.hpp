@@ -10,6 +10,10 @@
 // (T_d,in), and only the neutral spin loss T_N (neutral_drag_torque_Nm) at ω_e in neutral.
 // Gearbox load loss T_gl at ω_in, retarder T_r and axle loss T_ax = (1-η_a)|T_axle,in| at the
 // gearbox output ω_out = v i_a/r. Road: F_road = F_roll + F_aero + F_grade; brake F_b.
+// Temperatures: F_roll carries the tyre factor f_t(T_amb) (road_load.hpp); T_d and T_N carry the
+// cold-oil factor φ(T_oil,gb) of the gearbox oil node (driveline_oil.hpp), held over a macro
+// step. The oil nodes take, per macro step, the heat of their unit's losses: gearbox = drag +
+// load loss + converter + shift clutches + retarder (one ATF sump); axle = axle loss.
 //
 //   locked gL:  (M + (J_E+J_GI) k_g²) dv/dt = k_g (T_e + T_em - T_aux - T_d - T_gl)
 //                                             - (i_a/r)(T_r + T_ax) - F_road - F_b,  ω_e = k_g v
@@ -53,6 +57,7 @@
 #include <string>
 
 #include "common/table1d.hpp"
+#include "vehicle/driveline_oil.hpp"
 #include "vehicle/driver.hpp"
 #include "vehicle/road_load.hpp"
 #include "vehicle/shift_strategy.hpp"
@@ -85,7 +90,7 @@ struct VehicleInputs {
   // alternator on the crank, or the 48 V DC/DC: AuxParams::electricViaDcdc()).
   double hvac_compressor_W = 0.0;
   double hvac_electric_W = 0.0;
-  double ambient_T_K = 293.15;        // for the air density [K]
+  double ambient_T_K = 293.15;        // air density, tyre factor, oil nodes' surroundings [K]
   bool neutral_request = false;       // force neutral (coast-down, sailing)
   bool driver_enabled = true;         // false: pedals below are applied open-loop
   double accel_pedal_cmd = 0.0;       // [0, 1] when !driver_enabled
@@ -145,6 +150,13 @@ struct VehicleOutputs {
   double dcdc_input_power_W = 0.0;        // 48 V DC/DC input for the 24 V consumers [W] (hybrid)
   bool gear_changed = false;              // a gear change happened at the start of this step
   bool stop_hold = false;
+  // Temperature-dependent losses (of the last macro step):
+  double tyre_rr_factor = 1.0;            // f_t(T_amb) on the rolling resistance [-]
+  double gearbox_drag_factor = 1.0;       // φ(T_oil) on the gearbox spin losses [-]
+  double gearbox_oil_T_K = 0.0, axle_oil_T_K = 0.0;  // oil node temperatures [K]
+  double gearbox_oil_heat_W = 0.0;        // loss power into the ATF (drag + load + TC + shift + retarder) [W]
+  double axle_oil_heat_W = 0.0;           // axle loss power into its oil [W]
+  double gearbox_cooler_W = 0.0;          // ATF cooler heat rejection [W]
   VehicleEnergy energy;
 };
 
@@ -161,6 +173,11 @@ class VehicleModel {
   /// Advances by dt_s (the macro step). Throws ModelDivergence on non-finite inputs/state.
   const VehicleOutputs& step(double dt_s, const VehicleInputs& in);
   const VehicleOutputs& outputs() const { return out_; }
+  /// Oil temperatures [K] from now on (start:=warm); without this call after reset() both oil
+  /// nodes start at the ambient temperature of the first step (a cold start).
+  void setOilTemperatures(double gearbox_K, double axle_K);
+  const OilThermalNode& gearboxOil() const { return gb_oil_; }
+  const OilThermalNode& axleOil() const { return axle_oil_; }
 
   // Characteristics (for tests and tools).
   double vehicleInertiaMass_kg() const { return inertia_mass_kg_; }  // m + Σ J_wheel / r²
@@ -175,6 +192,8 @@ class VehicleModel {
   struct StepConst {  // held over one macro step
     double T_e, T_em, P_aux, F_brake, grade, rho;
     bool engine_on = true;  // false: T_e <= 0 acts as friction -|T_e| sgn(ω_e), T_e > 0 as is
+    double rr_factor = 1.0;    // tyre temperature factor f_t on F_roll [-]
+    double drag_factor = 1.0;  // cold-oil factor φ on the gearbox spin losses [-]
   };
   struct Rates {
     double T_eng = 0, T_em = 0, T_aux = 0, T_drag = 0, T_pump = 0, T_turb = 0, T_gload = 0;
@@ -198,12 +217,18 @@ class VehicleModel {
   double hvacCrankPower(const VehicleInputs& in) const;
   /// Splits one macro step's aux work dE_aux_J (at aux power P_aux_W) over the consumers.
   void bookAuxConsumers(double dE_aux_J, double P_aux_W, const VehicleInputs& in);
+  /// ATF heat so far: gearbox drag + load loss + converter + shift + retarder [J].
+  double gearboxOilHeat_J() const;
+  /// Steps both oil nodes with the heat of this macro step (energies since gb_J0 / axle_J0).
+  void stepOilNodes(double dt, double gb_J0, double axle_J0, double ambient_T_K);
 
   VehicleParams p_;
   RoadLoad road_;
   TorqueConverter tc_;
   GearLossMap gear_loss_map_;
   RetarderLoss ret_;
+  OilThermalNode gb_oil_, axle_oil_;
+  bool oil_set_ = false;  // oil temperatures given (setOilTemperatures) or taken at the first step
   ShiftStrategy shift_;
   Driver driver_;
   Table1D grade_profile_;

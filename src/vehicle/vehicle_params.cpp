@@ -24,6 +24,10 @@ void VehicleParams::declare(ParamSet& ps) {
   ps.add("rrc_load_exponent", c.rrc_load_exponent, "-", 0.5, 1.0, "VECTO beta (1 = no load correction)");
   ps.add("wheel_inertia_kg_m2", c.wheel_inertia_kg_m2, "kg m^2", 0.0, 100.0, "per tyre");
   ps.add("tyre_radius_m", c.tyre_radius_m, "m", 0.2, 1.0, "dynamic tyre radius");
+  ps.add("rrc_temperature_coefficient_per_K", c.rrc_temperature_coefficient_per_K, "1/K", 0.0, 0.02,
+         "K_t: F_r(t) = F_r,ref / (1 + K_t (t - t_ref)) (UN R117 / ISO 28580)");
+  ps.add("rrc_reference_temperature_K", c.rrc_reference_temperature_K, "K", 273.15, 323.15,
+         "ambient temperature of the RRC_ISO values (ISO 28580: 25 degC)");
 
   DrivelineParams& d = driveline;
   ps.setPrefix("driveline/");
@@ -75,6 +79,23 @@ void VehicleParams::declare(ParamSet& ps) {
 
   ps.setPrefix("gearbox/");
   gearbox.declare(ps);
+
+  OilUnitParams& g = driveline_oil.gearbox;
+  ps.setPrefix("driveline_oil/gearbox/");
+  ps.add("heat_capacity_J_K", g.heat_capacity_J_K, "J/K", 1e3, 1e7, "ATF + wetted housing");
+  ps.add("ua_ambient_W_K", g.ua_ambient_W_K, "W/K", 0.1, 1e4, "housing to ambient air");
+  ps.add("cooler_open_K", g.cooler_open_K, "K", 273.15, 420.0, "oil-to-coolant cooler holds the oil at or below this");
+  ps.add("reference_K", g.reference_K, "K", 273.15, 420.0, "oil temperature of the warm loss data");
+  ps.add("vogel_b_K", g.vogel_b_K, "K", 100.0, 5000.0, "Vogel law of the ATF");
+  ps.add("vogel_c_K", g.vogel_c_K, "K", 0.0, 250.0, "Vogel law of the ATF");
+  ps.add("drag_viscosity_exponent", g.drag_viscosity_exponent, "-", 0.0, 1.5, "drag torque ~ nu^n");
+  ps.add("warm_start_K", g.warm_start_K, "K", 273.15, 420.0, "oil temperature at start:=warm");
+  OilUnitParams& a = driveline_oil.axle;
+  a.cooler_open_K = 0.0;  // no cooler: not a key of the axle
+  ps.setPrefix("driveline_oil/axle/");
+  ps.add("heat_capacity_J_K", a.heat_capacity_J_K, "J/K", 1e3, 1e7, "gear oil + wetted housing");
+  ps.add("ua_ambient_W_K", a.ua_ambient_W_K, "W/K", 0.1, 1e4, "housing to ambient air");
+  ps.add("warm_start_K", a.warm_start_K, "K", 273.15, 420.0, "oil temperature at start:=warm");
 
   ps.setPrefix("numerics/");
   ps.add("max_substep_s", numerics.max_substep_s, "s", 1e-5, 0.01, "internal integration step");

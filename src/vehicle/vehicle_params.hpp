@@ -6,6 +6,7 @@
 
 #include "common/params.hpp"
 #include "common/units.hpp"
+#include "vehicle/driveline_oil.hpp"
 
 namespace hbt::vehicle {
 
@@ -24,6 +25,10 @@ struct ChassisParams {
   double rrc_load_exponent = 0.9;         // VECTO β: RRC = RRC_ISO (F_z/F_zISO)^(β-1)
   double wheel_inertia_kg_m2 = 14.9;      // per tyre, Wheels.csv 315/70 R22.5
   double tyre_radius_m = 0.4915;          // dynamic radius: d·3.05/(2π), d = 1012.5 mm
+  // Tyre rolling resistance vs ambient temperature, UN R117 / ISO 28580 (C3, LI > 121):
+  // F_r(t) = F_r25 / (1 + K_t (t - t_ref)), t = ambient [K or degC alike: a difference]
+  double rrc_temperature_coefficient_per_K = 0.006;  // K_t [1/K]
+  double rrc_reference_temperature_K = 298.15;       // t_ref = 25 degC
 };
 
 struct DrivelineParams {
@@ -114,6 +119,14 @@ struct NumericsParams {
   double max_substep_s = 0.001;           // internal Heun substep
 };
 
+/// Oil nodes of the gearbox and the axle (config/vehicle.yaml, group driveline_oil/).
+struct DrivelineOilParams {
+  // ATF + housing; oil-to-coolant cooler at 80 °C; spin losses ∝ ν^0.21 (Changenet & Velex)
+  OilUnitParams gearbox{1.3e5, 20.0, 353.15, 353.15, 858.5, 161.8, 0.21, 353.15};
+  // gear oil + axle housing, no cooler (temperature only: see src/vehicle/README.md)
+  OilUnitParams axle{1.4e5, 30.0, 0.0, 353.15, 858.5, 161.8, 0.21, 343.15};
+};
+
 struct VehicleParams {
   ChassisParams chassis;
   DrivelineParams driveline;
@@ -122,9 +135,10 @@ struct VehicleParams {
   DriverParams driver;
   AuxParams aux;
   NumericsParams numerics;
+  DrivelineOilParams driveline_oil;
   double totalMass_kg() const { return chassis.curb_mass_kg + chassis.payload_kg; }
   /// Registers every parameter as "<group>/<key>" (groups chassis, driveline, shift, driver,
-  /// numerics = config/vehicle.yaml; aux = config/aux/<set>.yaml; gearbox =
+  /// numerics, driveline_oil = config/vehicle.yaml; aux = config/aux/<set>.yaml; gearbox =
   /// config/gearbox/<set>.yaml).
   void declare(ParamSet& ps);
   /// Cross-field checks (vector lengths, ordering of shift lines). Throws InputError(file, key).

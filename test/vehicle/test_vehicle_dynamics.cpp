@@ -38,7 +38,9 @@ CoastDown analytic(const VehicleParams& p, double v0, double T_amb) {
   const double crr = sf * c.rrc_front * std::pow(sf * m * g / (c.tyres_front * c.tyre_fz_iso_N), -0.1) +
                      sr * c.rrc_rear * std::pow(sr * m * g / (c.tyres_rear * c.tyre_fz_iso_N), -0.1);
   const double rho = c.ambient_pressure_Pa / (c.air_R_J_kgK * T_amb);
-  return {m + (c.tyres_front + c.tyres_rear) * c.wheel_inertia_kg_m2 / (r * r), crr * m * g,
+  // ISO 28580 / UN R117 temperature correction F_r25 = F_rt (1 + K_t (t - 25 degC)), C3: 0.006
+  const double F_r25 = crr * m * g, F_rt = F_r25 / (1.0 + 0.006 * (T_amb - 273.15 - 25.0));
+  return {m + (c.tyres_front + c.tyres_rear) * c.wheel_inertia_kg_m2 / (r * r), F_rt,
           0.5 * rho * c.cda_m2, v0};
 }
 
@@ -159,12 +161,15 @@ TEST(VehicleDynamics, EnergyBalanceWithPrescribedEngine) {
 TEST(VehicleDynamics, AuxWorkSplitsExactlyOverConsumers) {
   // Neutral at a constant crank speed: the engine torque balances aux + neutral drag exactly,
   // so each consumer's work is its power times time (fan: +3 kW for 5 s, then windmilling
-  // -1 kW for 5 s), and the consumers add up to the booked aux work.
+  // -1 kW for 5 s), and the consumers add up to the booked aux work. ATF and ambient at the oil's
+  // reference temperature: the spin loss is the warm T_N (cold-oil factor exactly 1).
   const VehicleParams p;
   VehicleModel vm(p);
-  const double w = p.driveline.idle_speed_rad_s, dt = 0.01;
+  const double w = p.driveline.idle_speed_rad_s, dt = 0.01, T_ref = p.driveline_oil.gearbox.reference_K;
   vm.reset(0.0, 0, w);
+  vm.setOilTemperatures(T_ref, T_ref);
   VehicleInputs in;
+  in.ambient_T_K = T_ref;
   in.neutral_request = true;
   in.driver_enabled = false;
   in.has_fan_power = true;

@@ -123,6 +123,10 @@ void VehicleParticipant::configure() {
   model_ = std::make_unique<VehicleModel>(p, pkg);
   buildMission(p, pkg);
   model_->reset(profile_.speedAt(0.0), 0, p.driveline.idle_speed_rad_s, 0.0);
+  if (cosim::scenarioWarmStart(nh_))  // a bus mid-shift: driveline_oil/*/warm_start_K
+    model_->setOilTemperatures(p.driveline_oil.gearbox.warm_start_K, p.driveline_oil.axle.warm_start_K);
+  else  // a morning start: the oils at the ambient
+    model_->setOilTemperatures(ambient_T_K_, ambient_T_K_);
   declareTopics();
   readWarningThresholds(warnings_);
   warnings_.validate(configFile());
@@ -216,6 +220,14 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
   s.friction_brake_applied_nm = o.applied_brake_force_N * model_->params().chassis.tyre_radius_m;
   s.engine_on = engine_on_;
   s.aux_power_w = o.aux_power_W;
+  s.tyre_rr_factor = o.tyre_rr_factor;
+  s.gearbox_oil_temperature_k = o.gearbox_oil_T_K;
+  s.axle_oil_temperature_k = o.axle_oil_T_K;
+  s.gearbox_drag_factor = o.gearbox_drag_factor;
+  s.gearbox_oil_heat_w = o.gearbox_oil_heat_W;
+  s.axle_oil_heat_w = o.axle_oil_heat_W;
+  s.gearbox_cooler_heat_w = o.gearbox_cooler_W;
+  s.gearbox_cooler_heat_j = model_->gearboxOil().toCooler_J();
   const VehicleEnergy& en = o.energy;
   s.aux_deferred_j = en.aux_deferred_J;
   s.dcdc_power_w = o.dcdc_input_power_W;
