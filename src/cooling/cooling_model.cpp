@@ -188,7 +188,8 @@ void CoolingModel::ltPump(SubstepState& s) const {
 
 // Heater valve and heater-loop flow: the valve (with its lockout hysteresis on the engine
 // outlet) lets the heater loop into the circuit only while heating is wanted; the loop then
-// takes its share of the HT pump flow (with the engine standing: none, the loop stands).
+// takes its share of the HT pump flow, or, with the engine (and its pump) standing, the
+// electric circulation pump's flow.
 void CoolingModel::heaterValve(const CoolingInputs& in, SubstepState& s) {
   const auto& hp = p_.heater;
   const double T_c = T_.engine_loop;
@@ -196,7 +197,13 @@ void CoolingModel::heaterValve(const CoolingInputs& in, SubstepState& s) {
   if (T_c < hp.min_coolant_K - hp.lockout_hysteresis_K) heater_valve_open_ = false;
   const bool wanted = in.cabin_from_hvac ? in.cabin_heat_demand_W > 0.0 : s.Ta < hp.balance_temperature_K;
   s.valve_open = heater_valve_open_ && wanted;
-  s.q_heater = s.valve_open ? hp.loop_flow_fraction * s.q_pump : 0.0;
+  if (!s.valve_open) return;
+  if (s.w_p > 0.0) {
+    s.q_heater = hp.loop_flow_fraction * s.q_pump;
+  } else if (hp.electric_pump_flow_m3_s > 0.0) {
+    s.q_heater = hp.electric_pump_flow_m3_s;
+    s.e_pump_W = hp.electric_pump_power_W;
+  }
 }
 
 // Cabin heat taken from the convector volume: Q = min(D, q0 + g θ_v), the cabin's demand D or
@@ -300,6 +307,7 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.coolant_lt_T_K = T_.lt;
   o.heater_valve_open = s.valve_open;
   o.heater_loop_flow_m3_s = s.q_heater;
+  o.electric_pump_power_W = s.e_pump_W;
   o.thermostat_opening = s.y;
   o.fan_engagement = eng_;
   o.fan_speed_rad_s = s.n_fan;
@@ -325,6 +333,7 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.fan_drive_energy_J += s.fan_drive_W * h;
   o.pump_energy_J += s.pump_W * h;
   o.lt_pump_energy_J += s.lt_in_W * h;
+  o.electric_pump_energy_J += s.e_pump_W * h;
   o.engine_heat_J += in.engine_heat_W * h;
   o.lt_heat_J += in.lt_heat_W * h;
   o.aux_heater_J += in.aux_heater_heat_W * h;

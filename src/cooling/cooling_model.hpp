@@ -30,6 +30,10 @@
 //   min(Q̇_d, G_h (T_v - T_cab)) (0 if T_v <= T_cab); 0 with the valve shut
 // Coolant flows: V̇_pump = V̇_r ω_p/ω_r; radiator share y_eff = leak + (1 - leak) y, the rest
 // bypasses; ṁ_rad = ρ y_eff V̇_pump; heater loop (parallel branch) ṁ_heater = ρ f_h V̇_pump.
+// Engine stopped (the step's mean pump speed 0) with the heater valve open: the 24 V electric
+// circulation pump circulates the heater loop through the engine jacket, ṁ_heater = ρ V̇_e, at
+// its electric power P_e (0 otherwise; V̇_e = 0, a bus without the pump: the loop stands, the
+// convectors cool their own water only and the engine loop gives nothing).
 // LT: ṁ_lt = ρ V̇_lt,r ω_lt/ω_lt,max.
 // Thermostat: wax lag dT_w/dt = (T_c - T_w)/τ_w; play operator of half-width h = hysteresis/2,
 //   T_p <- clamp(T_p, T_w - h, T_w + h); y = clamp((T_p + h - T_start)/(T_full - T_start), 0, 1),
@@ -92,6 +96,7 @@ struct CoolingOutputs {
   double convector_coolant_T_K = 0.0;  // convector volume (heater loop) [K]
   bool heater_valve_open = false;      // heater loop in the circuit (heating wanted, coolant warm)
   double heater_loop_flow_m3_s = 0.0;  // coolant flow through the heater loop [m^3/s]
+  double electric_pump_power_W = 0.0;  // 24 V heater circulation pump, electric [W]
   double thermostat_opening = 0.0;     // [-]
   double fan_speed_rad_s = 0.0, fan_engagement = 0.0;
   double fan_power_W = 0.0;            // fan shaft power, signed (< 0 windmilling)
@@ -109,6 +114,7 @@ struct CoolingOutputs {
   double ht_air_in_T_K = 0.0;          // HT radiator air inlet (after the LT radiator) [K]
   // Cumulative since reset [J].
   double fan_energy_J = 0.0, fan_drive_energy_J = 0.0, pump_energy_J = 0.0, lt_pump_energy_J = 0.0;
+  double electric_pump_energy_J = 0.0; // 24 V heater circulation pump, electric
   double engine_heat_J = 0.0, lt_heat_J = 0.0, aux_heater_J = 0.0;
   double radiator_ht_J = 0.0, radiator_lt_J = 0.0, heater_J = 0.0, surface_loss_J = 0.0;
   double stored_change_J = 0.0;        // Σ C (T - T_0) over metal, the three HT volumes and LT
@@ -155,6 +161,7 @@ class CoolingModel {
     double y = 0, q_rad = 0, m_rad = 0;       // thermostat opening [-], radiator flow [m^3/s], [kg/s]
     bool valve_open = false;                  // heater loop in the circuit
     double q_heater = 0;                      // heater-loop flow [m^3/s]
+    double e_pump_W = 0;                      // electric circulation pump power [W]
     double n_fan = 0;                         // fan speed [rad/s]
     AirPoint air{0.0, 0.0, 0.0};              // air path at the fan speed
     double fan_drive_W = 0;                   // fan power at its drive (clutch slip included) [W]

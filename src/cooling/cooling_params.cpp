@@ -68,6 +68,9 @@ void CoolingParams::declare(ParamSet& ps) {
   ps.add("lockout_hysteresis_K", c.lockout_hysteresis_K, "K", 0.0, 30.0, "valve closes this much below min_coolant_K");
   ps.add("loop_volume_m3", c.loop_volume_m3, "m^3", 0.001, 0.3, "HT coolant in the heater loop and convectors");
   ps.add("loop_flow_fraction", c.loop_flow_fraction, "-", 0.01, 1.0, "heater-loop share of the HT pump flow");
+  ps.add("electric_pump_flow_m3_s", c.electric_pump_flow_m3_s, "m^3/s", 0.0, 0.01,
+         "electric circulation pump flow with the engine stopped (0 = no pump)");
+  ps.add("electric_pump_power_W", c.electric_pump_power_W, "W", 0.0, 2000.0, "its electric power while running");
 
   LtCircuitParams& l = lt;
   ps.setPrefix("lt/");

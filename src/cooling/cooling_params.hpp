@@ -73,6 +73,8 @@ struct HeaterParams {
   double lockout_hysteresis_K = 5.0;       // ... and closes again this much lower
   double loop_volume_m3 = 0.025;           // heater-loop pipes + passenger-compartment convectors
   double loop_flow_fraction = 0.25;        // heater-loop share of the HT pump flow, valve open
+  double electric_pump_flow_m3_s = 1.0e-3; // 24 V circulation pump: heater-loop flow, engine stopped
+  double electric_pump_power_W = 110.0;    // ... its electric power while it runs
 };
 
 /// Low-temperature (e-machine + power electronics) circuit with its radiator ahead of the HT one.
