@@ -16,10 +16,14 @@ double lagFactor(double h, double tau) { return tau > 0.0 ? std::exp(-h / tau) :
 CoolingModel::CoolingModel(const CoolingParams& p, const std::string& file) : p_(p), file_(file) {
   p_.validate(file);
   const auto& ht = p_.ht;
-  C_m_ = ht.metal_mass_kg * ht.metal_cp_J_kgK + ht.oil_mass_kg * ht.oil_cp_J_kgK;
-  C_c_ = ht.coolant_volume_m3 * ht.coolant_density_kg_m3 * ht.coolant_cp_J_kgK;
-  C_l_ = p_.lt.coolant_volume_m3 * ht.coolant_density_kg_m3 * ht.coolant_cp_J_kgK +
-         p_.lt.component_heat_capacity_J_K;
+  const double rho_c = ht.coolant_density_kg_m3 * ht.coolant_cp_J_kgK;  // [J/(m^3 K)]
+  NetworkCapacities C;
+  C.metal = ht.metal_mass_kg * ht.metal_cp_J_kgK + ht.oil_mass_kg * ht.oil_cp_J_kgK;
+  C.engine_loop = ht.engine_loop_volume_m3 * rho_c;
+  C.radiator = ht.radiator_volume_m3 * rho_c;
+  C.convector = p_.heater.loop_volume_m3 * rho_c;
+  C.lt = p_.lt.coolant_volume_m3 * rho_c + p_.lt.component_heat_capacity_J_K;
+  network_ = CoolantNetwork(C);
 
   const auto& r = p_.radiator;
   RadiatorRating rh;
@@ -53,20 +57,23 @@ CoolingModel::CoolingModel(const CoolingParams& p, const std::string& file) : p_
 void CoolingModel::reset(double ambient_T_K) { reset(ambient_T_K, ambient_T_K, ambient_T_K, ambient_T_K); }
 
 void CoolingModel::reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K) {
-  T_m_ = T_m0_ = metal_T_K;
-  T_c_ = T_c0_ = T_w_ = coolant_ht_T_K;
-  T_l_ = T_l0_ = coolant_lt_T_K;
+  T_.metal = metal_T_K;
+  T_.engine_loop = T_.radiator = T_.convector = T_w_ = coolant_ht_T_K;
+  T_.lt = coolant_lt_T_K;
+  T0_ = T_;
   T_p_ = T_w_ - 0.5 * p_.thermostat.hysteresis_K;  // on the heating branch
   eng_ = 0.0;
   w_lt_ = p_.lt.pump_idle_speed_rad_s;
-  heater_valve_open_ = T_c_ >= p_.heater.min_coolant_K;
+  heater_valve_open_ = T_.engine_loop >= p_.heater.min_coolant_K;
   out_ = CoolingOutputs{};
-  out_.coolant_ht_T_K = T_c_;
-  out_.metal_T_K = T_m_;
-  out_.coolant_lt_T_K = T_l_;
+  out_.coolant_ht_T_K = T_.engine_loop;
+  out_.radiator_coolant_T_K = T_.radiator;
+  out_.convector_coolant_T_K = T_.convector;
+  out_.metal_T_K = T_.metal;
+  out_.coolant_lt_T_K = T_.lt;
   out_.ht_air_in_T_K = ambient_T_K;
   out_.thermostat_opening = openingFromPlay(T_p_);
-  out_.warmup_time_s = T_c_ >= p_.thermostat.opening_start_K ? 0.0 : -1.0;
+  out_.warmup_time_s = T_.engine_loop >= p_.thermostat.opening_start_K ? 0.0 : -1.0;
 }
 
 double CoolingModel::openingFromPlay(double T_p) const {
@@ -136,8 +143,9 @@ void CoolingModel::substep(double h, const CoolingInputs& in) {
   s.G_lt = rad_lt_.conductance_W_K(s.m_air, s.m_lt);
   s.G_ht = rad_ht_.conductance_W_K(s.m_air, s.m_rad);
   s.pre = s.C_air > 0.0 ? s.G_lt / s.C_air : 0.0;  // T_air,HT,in - T_a = pre θ_l
+  heaterValve(in, s);
   heaterLoad(in, s);
-  const double T_c_old = T_c_;
+  const double T_c_old = T_.engine_loop;
   solveTemperatures(in, s);
   updateLags(in, s);
   recordOutputs(in, s, T_c_old);
@@ -179,55 +187,78 @@ void CoolingModel::ltPump(SubstepState& s) const {
   s.lt_in_W = s.w_lt > 0.0 ? lt_shaft_W * w_lt_in / s.w_lt : 0.0;
 }
 
-// Cabin heater: the valve (with its lockout hysteresis) and the heat it takes, either the
-// cabin's demand (constant) or, when the coolant cannot deliver it, a conductance: to the
-// ambient (heater/ balance point) or to the cabin (the hvac participant's demand).
-void CoolingModel::heaterLoad(const CoolingInputs& in, SubstepState& s) {
+// Heater valve and heater-loop flow: the valve (with its lockout hysteresis on the engine
+// outlet) lets the heater loop into the circuit only while heating is wanted; the loop then
+// takes its share of the HT pump flow, or, with the engine (and its pump) standing, the
+// electric circulation pump's flow.
+void CoolingModel::heaterValve(const CoolingInputs& in, SubstepState& s) {
   const auto& hp = p_.heater;
-  if (T_c_ >= hp.min_coolant_K) heater_valve_open_ = true;
-  if (T_c_ < hp.min_coolant_K - hp.lockout_hysteresis_K) heater_valve_open_ = false;
-  if (in.cabin_from_hvac) {
-    if (!heater_valve_open_ || !(in.cabin_heat_demand_W > 0.0) || !(T_c_ > in.cabin_T_K)) return;
-    if (hp.conductance_W_K * (T_c_ - in.cabin_T_K) >= in.cabin_heat_demand_W) {
-      s.q_h_const = in.cabin_heat_demand_W;
-    } else {  // Q = G_h (T_c,new - T_cab) = G_h θ_c - G_h (T_cab - T_a)
-      s.g_h = hp.conductance_W_K;
-      s.q_h_const = -hp.conductance_W_K * (in.cabin_T_K - s.Ta);
-    }
-    return;
-  }
-  if (s.Ta < hp.balance_temperature_K && heater_valve_open_) {
-    const double demand = hp.cabin_UA_W_K * (hp.balance_temperature_K - s.Ta);
-    if (hp.conductance_W_K * (T_c_ - s.Ta) >= demand) s.q_h_const = demand;
-    else s.g_h = hp.conductance_W_K;
+  const double T_c = T_.engine_loop;
+  if (T_c >= hp.min_coolant_K) heater_valve_open_ = true;
+  if (T_c < hp.min_coolant_K - hp.lockout_hysteresis_K) heater_valve_open_ = false;
+  const bool wanted = in.cabin_from_hvac ? in.cabin_heat_demand_W > 0.0 : s.Ta < hp.balance_temperature_K;
+  s.valve_open = heater_valve_open_ && wanted;
+  if (!s.valve_open) return;
+  if (s.w_p > 0.0) {
+    s.q_heater = hp.loop_flow_fraction * s.q_pump;
+  } else if (hp.electric_pump_flow_m3_s > 0.0) {
+    s.q_heater = hp.electric_pump_flow_m3_s;
+    s.e_pump_W = hp.electric_pump_power_W;
   }
 }
 
-// Backward Euler on θ = T - T_a; the heat flows of the implicit update and the new temperatures.
+// Cabin heat taken from the convector volume: Q = min(D, q0 + g θ_v), the cabin's demand D or
+// what the convectors deliver at their water temperature, G_h (T_v - T_ref) = q0 + g θ_v with
+// T_ref the ambient (heater/ balance point) or the cabin (the hvac participant's demand).
+void CoolingModel::heaterLoad(const CoolingInputs& in, SubstepState& s) const {
+  if (!s.valve_open) return;
+  const auto& hp = p_.heater;
+  const double T_ref = in.cabin_from_hvac ? in.cabin_T_K : s.Ta;
+  if (!(T_.convector > T_ref)) return;  // the convectors cannot heat the cabin
+  s.heater_demand_W = in.cabin_from_hvac ? in.cabin_heat_demand_W
+                                         : hp.cabin_UA_W_K * (hp.balance_temperature_K - s.Ta);
+  s.heater_g = hp.conductance_W_K;
+  s.heater_q0 = -hp.conductance_W_K * (T_ref - s.Ta);
+  s.heater_on = s.heater_demand_W > 0.0;
+}
+
+// Backward Euler of the thermal network (coolant_network.hpp) with this substep's coefficients.
 void CoolingModel::solveTemperatures(const CoolingInputs& in, SubstepState& s) {
   const auto& ht = p_.ht;
-  const double h = s.h, Ta = s.Ta;
-  const double G_mc = ht.metal_to_coolant_UA_W_K, G_s = ht.surface_loss_UA_W_K;
-  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d b;
-  A(0, 0) = C_m_ / h + G_mc + G_s;
-  A(0, 1) = -G_mc;
-  A(1, 0) = -G_mc;
-  A(1, 1) = C_c_ / h + G_mc + s.G_ht + s.g_h;
-  A(1, 2) = -s.G_ht * s.pre;
-  A(2, 2) = C_l_ / h + s.G_lt;
-  b(0) = C_m_ / h * (T_m_ - Ta) + in.engine_heat_W - in.em_engine_heat_W;
-  b(1) = C_c_ / h * (T_c_ - Ta) - s.q_h_const + in.aux_heater_heat_W;
-  b(2) = C_l_ / h * (T_l_ - Ta) + in.lt_heat_W;
-  s.th = A.partialPivLu().solve(b);
+  const double rho_cp = ht.coolant_density_kg_m3 * ht.coolant_cp_J_kgK;
+  NetworkCoefficients k;
+  k.G_mc = ht.metal_to_coolant_UA_W_K;
+  k.G_s = ht.surface_loss_UA_W_K;
+  k.W_rad = rho_cp * s.q_rad;
+  k.W_heater = rho_cp * s.q_heater;
+  k.G_ht = s.G_ht;
+  k.preheat = s.pre;
+  k.G_lt = s.G_lt;
+  k.Q_engine = in.engine_heat_W - in.em_engine_heat_W;  // net heat into the metal: minus what the P1 flange takes
+  k.Q_aux = in.aux_heater_heat_W;
+  k.Q_lt = in.lt_heat_W;
+  // Heater Q = min(D, q0 + g θ_v) taken at the new convector temperature: the branch the old
+  // temperature picks, solved again on the other branch if the new temperature picks that one.
+  const NetworkState T_old = T_;
+  const auto setBranch = [&](bool capacity_limited) {
+    k.q_heater = !s.heater_on ? 0.0 : capacity_limited ? s.heater_q0 : s.heater_demand_W;
+    k.g_heater = s.heater_on && capacity_limited ? s.heater_g : 0.0;
+  };
+  const auto limited = [&](const NetworkState& T) {
+    return s.heater_q0 + s.heater_g * (T.convector - s.Ta) < s.heater_demand_W;
+  };
+  const bool first = limited(T_old);
+  setBranch(first);
+  s.flux = network_.step(s.h, s.Ta, k, T_);
+  if (s.heater_on && limited(T_) != first) {
+    T_ = T_old;
+    setBranch(!first);
+    s.flux = network_.step(s.h, s.Ta, k, T_);
+  }
+  checkTemperatures();
+}
 
-  s.Q_lt = s.G_lt * s.th(2);
-  s.Q_ht = s.G_ht * (s.th(1) - s.pre * s.th(2));
-  s.Q_h = s.q_h_const + s.g_h * s.th(1);
-  s.Q_s = G_s * s.th(0);
-  T_m_ = Ta + s.th(0);
-  T_c_ = Ta + s.th(1);
-  T_l_ = Ta + s.th(2);
+void CoolingModel::checkTemperatures() const {
   const auto& nm = p_.numerics;
   auto chk = [&](double T, const char* what) {
     if (!std::isfinite(T) || T < nm.min_temperature_K || T > nm.max_temperature_K)
@@ -235,9 +266,11 @@ void CoolingModel::solveTemperatures(const CoolingInputs& in, SubstepState& s) {
                             "= " + std::to_string(T) + " K outside [" + std::to_string(nm.min_temperature_K) +
                                 ", " + std::to_string(nm.max_temperature_K) + "] K");
   };
-  chk(T_m_, "engine metal temperature");
-  chk(T_c_, "HT coolant temperature");
-  chk(T_l_, "LT coolant temperature");
+  chk(T_.metal, "engine metal temperature");
+  chk(T_.engine_loop, "HT coolant temperature");
+  chk(T_.radiator, "HT radiator coolant temperature");
+  chk(T_.convector, "HT convector coolant temperature");
+  chk(T_.lt, "LT coolant temperature");
 }
 
 // Lags with the new coolant temperatures (exact exponential update): thermostat wax and its
@@ -246,13 +279,14 @@ void CoolingModel::updateLags(const CoolingInputs& in, const SubstepState& s) {
   const double h = s.h;
   const auto& f = p_.fan;
   const auto& tp = p_.thermostat;
-  T_w_ = T_c_ + (T_w_ - T_c_) * lagFactor(h, tp.wax_time_constant_s);
+  const double T_c = T_.engine_loop;
+  T_w_ = T_c + (T_w_ - T_c) * lagFactor(h, tp.wax_time_constant_s);
   const double hh = 0.5 * tp.hysteresis_K;
   T_p_ = std::min(std::max(T_p_, T_w_ - hh), T_w_ + hh);
   const double e_target =
-      std::max(clamp01((T_c_ - f.engage_start_K) / (f.engage_full_K - f.engage_start_K)), clamp01(in.fan_demand));
+      std::max(clamp01((T_c - f.engage_start_K) / (f.engage_full_K - f.engage_start_K)), clamp01(in.fan_demand));
   eng_ = e_target + (eng_ - e_target) * lagFactor(h, f.clutch_time_constant_s);
-  const double w_target = ltPumpTarget(T_l_);
+  const double w_target = ltPumpTarget(T_.lt);
   w_lt_ = w_target + (w_lt_ - w_target) * lagFactor(h, p_.lt.pump_time_constant_s);
 }
 
@@ -261,14 +295,20 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   const double h = s.h;
   const auto& tp = p_.thermostat;
   CoolingOutputs& o = out_;
-  if (o.warmup_time_s < 0.0 && T_c_ >= tp.opening_start_K) {
-    const double frac = T_c_ > T_c_old ? (tp.opening_start_K - T_c_old) / (T_c_ - T_c_old) : 1.0;
+  const double T_c = T_.engine_loop;
+  if (o.warmup_time_s < 0.0 && T_c >= tp.opening_start_K) {
+    const double frac = T_c > T_c_old ? (tp.opening_start_K - T_c_old) / (T_c - T_c_old) : 1.0;
     o.warmup_time_s = o.time_s + h * std::min(1.0, std::max(0.0, frac));
   }
   o.time_s += h;
-  o.coolant_ht_T_K = T_c_;
-  o.metal_T_K = T_m_;
-  o.coolant_lt_T_K = T_l_;
+  o.coolant_ht_T_K = T_c;
+  o.radiator_coolant_T_K = T_.radiator;
+  o.convector_coolant_T_K = T_.convector;
+  o.metal_T_K = T_.metal;
+  o.coolant_lt_T_K = T_.lt;
+  o.heater_valve_open = s.valve_open;
+  o.heater_loop_flow_m3_s = s.q_heater;
+  o.electric_pump_power_W = s.e_pump_W;
   o.thermostat_opening = s.y;
   o.fan_engagement = eng_;
   o.fan_speed_rad_s = s.n_fan;
@@ -279,30 +319,32 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.lt_pump_speed_rad_s = s.w_lt;
   o.lt_pump_power_W = s.lt_in_W;
   o.lt_pump_hydraulic_power_W = s.lt_hyd_W;
-  o.radiator_ht_heat_W = s.Q_ht;
-  o.radiator_lt_heat_W = s.Q_lt;
-  o.heater_heat_W = s.Q_h;
+  const NetworkFluxes& f = s.flux;
+  o.radiator_ht_heat_W = f.radiator_ht;
+  o.radiator_lt_heat_W = f.radiator_lt;
+  o.heater_heat_W = f.heater;
   o.aux_heater_heat_W = in.aux_heater_heat_W;
-  o.surface_loss_W = s.Q_s;
+  o.surface_loss_W = f.surface;
   o.air_volume_flow_m3_s = s.air.flow_m3_s;
   o.air_mass_flow_kg_s = s.m_air;
   o.coolant_flow_m3_s = s.q_pump;
   o.radiator_coolant_flow_m3_s = s.q_rad;
-  o.ht_air_in_T_K = s.Ta + s.pre * s.th(2);
+  o.ht_air_in_T_K = s.Ta + s.pre * (T_.lt - s.Ta);
   o.fan_energy_J += s.air.power_W * h;
   o.fan_drive_energy_J += s.fan_drive_W * h;
   o.pump_energy_J += s.pump_W * h;
   o.lt_pump_energy_J += s.lt_in_W * h;
+  o.electric_pump_energy_J += s.e_pump_W * h;
   o.engine_heat_J += in.engine_heat_W * h;
   o.lt_heat_J += in.lt_heat_W * h;
   o.em_engine_heat_W = in.em_engine_heat_W;
   o.em_engine_heat_J += in.em_engine_heat_W * h;
   o.aux_heater_J += in.aux_heater_heat_W * h;
-  o.radiator_ht_J += s.Q_ht * h;
-  o.radiator_lt_J += s.Q_lt * h;
-  o.heater_J += s.Q_h * h;
-  o.surface_loss_J += s.Q_s * h;
-  o.stored_change_J = C_m_ * (T_m_ - T_m0_) + C_c_ * (T_c_ - T_c0_) + C_l_ * (T_l_ - T_l0_);
+  o.radiator_ht_J += f.radiator_ht * h;
+  o.radiator_lt_J += f.radiator_lt * h;
+  o.heater_J += f.heater * h;
+  o.surface_loss_J += f.surface * h;
+  o.stored_change_J = network_.storedSince_J(T_, T0_);
   o.energy_residual_J = o.engine_heat_J + o.lt_heat_J + o.aux_heater_J - o.em_engine_heat_J - o.radiator_ht_J -
                         o.radiator_lt_J - o.heater_J - o.surface_loss_J - o.stored_change_J;
 }

@@ -3,26 +3,39 @@
 // circuit whose radiator sits in front of the HT radiator in the same air stream. ROS-free,
 // deterministic, no allocation in step().
 //
-// States: T_m metal+oil [K], T_c HT coolant (engine outlet, well mixed) [K], T_l LT coolant [K],
-// T_w thermostat wax [K], T_p play-operator output of the wax temperature [K], e fan-clutch
-// engagement [-], ω_lt LT pump speed (clutch output, before the input-speed cap) [rad/s].
+// States: T_m metal+oil [K]; HT coolant in three well-mixed volumes: T_c engine loop (jacket,
+// pump, thermostat housing, bypass; its temperature is the engine outlet, "the" HT coolant
+// temperature of the thermostat, fan, heater valve, warm-up time and EMS), T_r radiator volume,
+// T_v convector volume (heater loop); T_l LT coolant [K]; T_w thermostat wax [K], T_p
+// play-operator output of the wax temperature [K], e fan-clutch engagement [-], ω_lt LT pump
+// speed (clutch output, before the input-speed cap) [rad/s]; the heater valve (open/shut).
 //
-// Thermal network (Q̇ in W, C in J/K, G in W/K, T_a ambient):
+// Thermal network (equations in coolant_network.hpp; Q̇ in W, C in J/K, G, W in W/K, T_a ambient):
 //   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_s (T_m - T_a) - Q̇_em   (Q̇_em: heat conducted into
 //                 the P1 e-machine's housing and rotor, which its LT heat then carries)
-//   C_c dT_c/dt = G_mc (T_m - T_c) - Q̇_rad,HT - Q̇_heater + Q̇_aux   (Q̇_aux: fuel-fired heater, hvac)
+//   C_c dT_c/dt = G_mc (T_m - T_c) - W_r (T_c - T_r) - W_v (T_c - T_v) + Q̇_aux   (Q̇_aux: fuel-fired heater)
+//   C_r dT_r/dt = W_r (T_c - T_r) - Q̇_rad,HT
+//   C_v dT_v/dt = W_v (T_c - T_v) - Q̇_heater
 //   C_l dT_l/dt = Q̇_LT,in - Q̇_rad,LT
-//   C_m = m_metal c_metal + m_oil c_oil,  C_c = ρ V c (HT coolant),  C_l = ρ V_lt c + C_components
+//   C_m = m_metal c_metal + m_oil c_oil,  C_c, C_r, C_v = ρ V c of the engine loop, radiator and
+//   convector volumes,  C_l = ρ V_lt c + C_components
+//   W_r = ṁ_rad c (thermostat),  W_v = ṁ_heater c (heater valve open, heating wanted; else 0)
 //   Q̇_rad,LT = G_LT (T_l - T_a),                       G = ε C_min of the radiator (radiator.hpp)
 //   T_air,HT,in = T_a + Q̇_rad,LT/(ṁ_air c_p,air)        (LT radiator pre-heats the HT radiator air)
-//   Q̇_rad,HT = G_HT (T_c - T_air,HT,in)
-//   Q̇_heater = 0 if T_a >= T_bal or the valve is shut, else min(UA_cab (T_bal - T_a), G_h (T_c - T_a));
-//   valve opens when T_c >= T_heat,min and shuts when T_c < T_heat,min - hysteresis.
-//   With the hvac participant (in.cabin_from_hvac): its demand Q̇_d and cabin temperature T_cab
-//   replace the balance point: Q̇_heater = min(Q̇_d, G_h (T_c - T_cab)) (0 if T_c <= T_cab),
-//   valve as above
+//   Q̇_rad,HT = G_HT (T_c - T_air,HT,in)                 (radiator inlet = engine outlet)
+//   Heating wanted: T_a < T_bal (balance point) or, with the hvac participant (in.cabin_from_hvac),
+//   its demand Q̇_d > 0. Heater valve: opens when T_c >= T_heat,min and shuts when
+//   T_c < T_heat,min - hysteresis; shut while no heating is wanted (the climate control keeps
+//   the convector loop out of the circuit).
+//   Q̇_heater = min(UA_cab (T_bal - T_a), G_h (T_v - T_a)), or with the hvac participant
+//   min(Q̇_d, G_h (T_v - T_cab)) (0 if T_v <= T_cab); 0 with the valve shut
 // Coolant flows: V̇_pump = V̇_r ω_p/ω_r; radiator share y_eff = leak + (1 - leak) y, the rest
-// bypasses; ṁ_rad = ρ y_eff V̇_pump. LT: ṁ_lt = ρ V̇_lt,r ω_lt/ω_lt,max.
+// bypasses; ṁ_rad = ρ y_eff V̇_pump; heater loop (parallel branch) ṁ_heater = ρ f_h V̇_pump.
+// Engine stopped (the step's mean pump speed 0) with the heater valve open: the 24 V electric
+// circulation pump circulates the heater loop through the engine jacket, ṁ_heater = ρ V̇_e, at
+// its electric power P_e (0 otherwise; V̇_e = 0, a bus without the pump: the loop stands, the
+// convectors cool their own water only and the engine loop gives nothing).
+// LT: ṁ_lt = ρ V̇_lt,r ω_lt/ω_lt,max.
 // Thermostat: wax lag dT_w/dt = (T_c - T_w)/τ_w; play operator of half-width h = hysteresis/2,
 //   T_p <- clamp(T_p, T_w - h, T_w + h); y = clamp((T_p + h - T_start)/(T_full - T_start), 0, 1),
 //   so the heating curve opens at T_start..T_full and the cooling curve closes 2h lower.
@@ -44,8 +57,9 @@
 // LT pump rule: ω*_lt = ω_idle + (ω_max - ω_idle) clamp((T_l - T_lo)/(T_hi - T_lo)),
 //   dω_lt/dt = (ω*_lt - ω_lt)/τ_lt, actual speed min(ω_lt, ω_crank r_lt).
 //
-// Integration: per substep (<= max_substep_s) the flows, ε and the heater branch are frozen at
-// the start of the substep and the linear 3x3 network is advanced by backward Euler (implicit,
+// Integration: per substep (<= max_substep_s) the flows, ε and the heater valve are frozen at
+// the start of the substep (the heater's min() on the branch the new convector temperature
+// picks) and the linear 5-node network is advanced by backward Euler (implicit,
 // unconditionally stable). The cumulative energies book exactly the fluxes of that update, so
 // heat in - heat out - Δstored = 0 to round-off. Lags (wax, clutch, LT pump) use the exact
 // exponential update with the new coolant temperature.
@@ -53,6 +67,7 @@
 #include "common/units.hpp"
 #include <Eigen/Dense>
 
+#include "cooling/coolant_network.hpp"
 #include "cooling/cooling_params.hpp"
 #include "cooling/radiator.hpp"
 
@@ -78,7 +93,13 @@ struct CoolingInputs {
 };
 
 struct CoolingOutputs {
-  double coolant_ht_T_K = 0.0, metal_T_K = 0.0, coolant_lt_T_K = 0.0;
+  double coolant_ht_T_K = 0.0;         // engine loop = engine outlet [K]
+  double metal_T_K = 0.0, coolant_lt_T_K = 0.0;
+  double radiator_coolant_T_K = 0.0;   // radiator volume (= its return to the engine) [K]
+  double convector_coolant_T_K = 0.0;  // convector volume (heater loop) [K]
+  bool heater_valve_open = false;      // heater loop in the circuit (heating wanted, coolant warm)
+  double heater_loop_flow_m3_s = 0.0;  // coolant flow through the heater loop [m^3/s]
+  double electric_pump_power_W = 0.0;  // 24 V heater circulation pump, electric [W]
   double thermostat_opening = 0.0;     // [-]
   double fan_speed_rad_s = 0.0, fan_engagement = 0.0;
   double fan_power_W = 0.0;            // fan shaft power, signed (< 0 windmilling)
@@ -96,10 +117,11 @@ struct CoolingOutputs {
   double ht_air_in_T_K = 0.0;          // HT radiator air inlet (after the LT radiator) [K]
   // Cumulative since reset [J].
   double fan_energy_J = 0.0, fan_drive_energy_J = 0.0, pump_energy_J = 0.0, lt_pump_energy_J = 0.0;
+  double electric_pump_energy_J = 0.0; // 24 V heater circulation pump, electric
   double engine_heat_J = 0.0, lt_heat_J = 0.0, aux_heater_J = 0.0;
   double em_engine_heat_W = 0.0, em_engine_heat_J = 0.0;  // engine metal -> e-machine [W], [J]
   double radiator_ht_J = 0.0, radiator_lt_J = 0.0, heater_J = 0.0, surface_loss_J = 0.0;
-  double stored_change_J = 0.0;        // Σ C (T - T_0)
+  double stored_change_J = 0.0;        // Σ C (T - T_0) over metal, the three HT volumes and LT
   double energy_residual_J = 0.0;      // in - out - stored change (ideally 0)
   double warmup_time_s = -1.0;         // first time T_c >= opening start (-1 before)
   double time_s = 0.0;
@@ -112,7 +134,7 @@ class CoolingModel {
   /// Cold start: every temperature = ambient_T_K, clutches at rest (e = 0, LT pump idle),
   /// thermostat closed, cumulatives 0.
   void reset(double ambient_T_K);
-  /// Restarts warm: metal + oil, HT and LT coolant at the given temperatures [K] (the wax and its
+  /// Restarts warm: metal + oil, HT (all three volumes) and LT coolant at the given temperatures [K] (the wax and its
   /// play on the heating branch at the coolant, the heater valve as the coolant sets it), fan
   /// clutch released; the stored energy and warm-up time count from this state (warm-up time 0
   /// when the coolant is already at the thermostat's opening).
@@ -123,9 +145,8 @@ class CoolingModel {
   const CoolingParams& params() const { return p_; }
   const Radiator& htRadiator() const { return rad_ht_; }
   const Radiator& ltRadiator() const { return rad_lt_; }
-  double metalHeatCapacity_J_K() const { return C_m_; }
-  double coolantHeatCapacity_J_K() const { return C_c_; }
-  double ltHeatCapacity_J_K() const { return C_l_; }
+  /// Heat capacities of the network's nodes [J/K] (metal, engine loop, radiator, convector, LT).
+  const NetworkCapacities& capacities() const { return network_.capacities(); }
 
   /// Air path alone: volume flow [m^3/s], fan pressure rise [Pa] and signed fan power [W] at fan
   /// speed n [rad/s], vehicle speed v [m/s], air density rho (<= 0: the rated density).
@@ -142,6 +163,9 @@ class CoolingModel {
     double h = 0, Ta = 0, w_p = 0;            // substep [s], ambient [K], HT pump speed [rad/s]
     double q_pump = 0, pump_W = 0;            // HT pump flow [m^3/s] and shaft power [W]
     double y = 0, q_rad = 0, m_rad = 0;       // thermostat opening [-], radiator flow [m^3/s], [kg/s]
+    bool valve_open = false;                  // heater loop in the circuit
+    double q_heater = 0;                      // heater-loop flow [m^3/s]
+    double e_pump_W = 0;                      // electric circulation pump power [W]
     double n_fan = 0;                         // fan speed [rad/s]
     AirPoint air{0.0, 0.0, 0.0};              // air path at the fan speed
     double fan_drive_W = 0;                   // fan power at its drive (clutch slip included) [W]
@@ -149,28 +173,31 @@ class CoolingModel {
     double w_lt = 0, m_lt = 0;                // LT pump speed [rad/s], LT coolant flow [kg/s]
     double lt_hyd_W = 0, lt_in_W = 0;         // LT pump hydraulic and drive power [W]
     double G_lt = 0, G_ht = 0, pre = 0;       // radiator conductances [W/K], LT air preheat [-]
-    double q_h_const = 0, g_h = 0;            // heater: constant demand [W] or conductance [W/K]
-    Eigen::Vector3d th = Eigen::Vector3d::Zero();  // new metal, HT, LT temperatures - ambient [K]
-    double Q_lt = 0, Q_ht = 0, Q_h = 0, Q_s = 0;   // heat flows of the implicit update [W]
+    bool heater_on = false;                   // convectors drawing heat (valve open, demand, T_v warm)
+    double heater_demand_W = 0;               // heater: the cabin's demand D [W] ...
+    double heater_q0 = 0, heater_g = 0;       // ... or the convectors' q0 + g θ_v [W], [W/K]
+    NetworkFluxes flux;                       // heat flows of the implicit update [W]
   };
   void substep(double h, const CoolingInputs& in);
   void htPumpAndThermostat(SubstepState& s) const;
   void fanAndAirFlow(const CoolingInputs& in, double rho_air, SubstepState& s) const;
   void ltPump(SubstepState& s) const;
-  void heaterLoad(const CoolingInputs& in, SubstepState& s);
+  void heaterValve(const CoolingInputs& in, SubstepState& s);
+  void heaterLoad(const CoolingInputs& in, SubstepState& s) const;
   void solveTemperatures(const CoolingInputs& in, SubstepState& s);
   void updateLags(const CoolingInputs& in, const SubstepState& s);
   void recordOutputs(const CoolingInputs& in, const SubstepState& s, double T_c_old);
+  void checkTemperatures() const;
   void checkFinite(const CoolingInputs& in) const;
   CoolingParams p_;
   std::string file_;
   Radiator rad_ht_, rad_lt_;
-  double C_m_ = 0, C_c_ = 0, C_l_ = 0;
+  CoolantNetwork network_;
   double dp_rated_ = 0, dp0_ = 0, K_sys_ = 0, flow_free_r_ = 0;
   // State.
-  double T_m_ = 0, T_c_ = 0, T_l_ = 0, T_w_ = 0, T_p_ = 0, eng_ = 0, w_lt_ = 0;
+  NetworkState T_, T0_;  // node temperatures and those of the last reset [K]
+  double T_w_ = 0, T_p_ = 0, eng_ = 0, w_lt_ = 0;
   bool heater_valve_open_ = false;
-  double T_m0_ = 0, T_c0_ = 0, T_l0_ = 0;
   CoolingOutputs out_;
 };
 

@@ -11,7 +11,9 @@ void CoolingParams::declare(ParamSet& ps) {
   ps.add("metal_cp_J_kgK", h.metal_cp_J_kgK, "J/(kg K)", 300.0, 1000.0, "metal specific heat");
   ps.add("oil_mass_kg", h.oil_mass_kg, "kg", 0.0, 200.0, "engine oil (lumped with the metal)");
   ps.add("oil_cp_J_kgK", h.oil_cp_J_kgK, "J/(kg K)", 1500.0, 2800.0, "oil specific heat");
-  ps.add("coolant_volume_m3", h.coolant_volume_m3, "m^3", 0.005, 0.5, "HT coolant volume");
+  ps.add("engine_loop_volume_m3", h.engine_loop_volume_m3, "m^3", 0.001, 0.2,
+         "HT coolant of the engine loop (jacket, pump, thermostat housing, bypass)");
+  ps.add("radiator_volume_m3", h.radiator_volume_m3, "m^3", 0.001, 0.2, "HT coolant in the radiator and its pipes");
   ps.add("coolant_density_kg_m3", h.coolant_density_kg_m3, "kg/m^3", 900.0, 1200.0, "coolant density");
   ps.add("coolant_cp_J_kgK", h.coolant_cp_J_kgK, "J/(kg K)", 2000.0, 4300.0, "coolant specific heat");
   ps.add("metal_to_coolant_UA_W_K", h.metal_to_coolant_UA_W_K, "W/K", 100.0, 1e5, "water-jacket conductance");
@@ -64,6 +66,11 @@ void CoolingParams::declare(ParamSet& ps) {
   ps.add("conductance_W_K", c.conductance_W_K, "W/K", 0.0, 1e4, "heater-core limit G (T_cool - T_amb)");
   ps.add("min_coolant_K", c.min_coolant_K, "K", 250.0, 380.0, "heater valve opens at this coolant T");
   ps.add("lockout_hysteresis_K", c.lockout_hysteresis_K, "K", 0.0, 30.0, "valve closes this much below min_coolant_K");
+  ps.add("loop_volume_m3", c.loop_volume_m3, "m^3", 0.001, 0.3, "HT coolant in the heater loop and convectors");
+  ps.add("loop_flow_fraction", c.loop_flow_fraction, "-", 0.01, 1.0, "heater-loop share of the HT pump flow");
+  ps.add("electric_pump_flow_m3_s", c.electric_pump_flow_m3_s, "m^3/s", 0.0, 0.01,
+         "electric circulation pump flow with the engine stopped (0 = no pump)");
+  ps.add("electric_pump_power_W", c.electric_pump_power_W, "W", 0.0, 2000.0, "its electric power while running");
 
   LtCircuitParams& l = lt;
   ps.setPrefix("lt/");

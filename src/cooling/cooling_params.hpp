@@ -15,7 +15,8 @@ struct HtCircuitParams {
   double metal_cp_J_kgK = 480.0;           // grey/compacted-graphite iron
   double oil_mass_kg = 26.0;               // ~30 L sump, lumped with the metal
   double oil_cp_J_kgK = 2100.0;
-  double coolant_volume_m3 = 0.050;        // engine jacket + radiator + bus pipes + heaters
+  double engine_loop_volume_m3 = 0.010;    // jacket, pump, thermostat housing, bypass, short pipes
+  double radiator_volume_m3 = 0.015;       // radiator core, tanks and its pipes
   double coolant_density_kg_m3 = 1050.0;   // 50/50 ethylene glycol/water at ~80 °C
   double coolant_cp_J_kgK = 3550.0;
   double metal_to_coolant_UA_W_K = 5000.0; // water-jacket conductance
@@ -70,6 +71,10 @@ struct HeaterParams {
   double conductance_W_K = 400.0;          // heater cores: max heat = G (T_cool - T_amb)
   double min_coolant_K = units::celsiusToK(40.0);  // heater valve opens at this coolant T
   double lockout_hysteresis_K = 5.0;       // ... and closes again this much lower
+  double loop_volume_m3 = 0.025;           // heater-loop pipes + passenger-compartment convectors
+  double loop_flow_fraction = 0.25;        // heater-loop share of the HT pump flow, valve open
+  double electric_pump_flow_m3_s = 1.0e-3; // 24 V circulation pump: heater-loop flow, engine stopped
+  double electric_pump_power_W = 110.0;    // ... its electric power while it runs
 };
 
 /// Low-temperature (e-machine + power electronics) circuit with its radiator ahead of the HT one.

@@ -86,8 +86,9 @@ struct VehicleInputs {
   bool has_fan_power = false;         // true when the cooling node provides fan_power_W
   double fan_power_W = 0.0;           // fan shaft power [W] (may be < 0: windmilling)
   // HVAC (the hvac participant, hvac:=on): the A/C compressor's shaft power on the crank [W] and
-  // the HVAC's 24 V electric load [W], fed the way the aux set feeds its 24 V consumers (the
-  // alternator on the crank, or the 48 V DC/DC: AuxParams::electricViaDcdc()).
+  // the HVAC's 24 V electric load [W] (with the cooling's heater circulation pump), fed the way
+  // the aux set feeds its 24 V consumers (the alternator on the crank, or the 48 V DC/DC:
+  // AuxParams::electricViaDcdc()).
   double hvac_compressor_W = 0.0;
   double hvac_electric_W = 0.0;
   double ambient_T_K = 293.15;        // air density, tyre factor, oil nodes' surroundings [K]

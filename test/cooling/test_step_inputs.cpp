@@ -112,8 +112,9 @@ TEST(CoolingModel, AWarmSystemWithAStandingPumpLosesNoHeatThroughTheRadiator) {
   off.ambient_T_K = Ta;  // engine_heat_W = 0, pump_speed_rad_s = 0
   const auto stored_J = [&] {  // Σ C T of metal, HT and LT coolant
     const CoolingOutputs& o = m.outputs();
-    return m.metalHeatCapacity_J_K() * o.metal_T_K + m.coolantHeatCapacity_J_K() * o.coolant_ht_T_K +
-           m.ltHeatCapacity_J_K() * o.coolant_lt_T_K;
+    const NetworkCapacities& C = m.capacities();
+    return C.metal * o.metal_T_K + C.engine_loop * o.coolant_ht_T_K + C.radiator * o.radiator_coolant_T_K +
+           C.convector * o.convector_coolant_T_K + C.lt * o.coolant_lt_T_K;
   };
   double E_prev = stored_J();
   for (int k = 0; k < 600; ++k) {  // a 60 s stop

@@ -34,6 +34,7 @@ from twin_tools.report import hvac
 
 # topics (twin_tools.wiring: the participants' topics.yaml)
 BATTERY_STATE = wiring.topic("battery", "state")
+COOLING_STATE = wiring.topic("cooling", "state")
 EMACHINE_STATE = wiring.topic("emachine", "state")
 ENGINE_HEAT = wiring.topic("engine", "heat")
 ENGINE_STATE = wiring.topic("engine", "state")
@@ -50,7 +51,8 @@ DRIVELINE_SINKS = [
     ("aux_steering", "aux_steering_work_j", "steering pump"),
     ("aux_pneumatic", "aux_pneumatic_work_j", "pneumatic system (air compressor)"),
     ("aux_electric", "aux_electric_work_j", "electric system (alternator)"),
-    ("aux_hvac", "aux_hvac_work_j", "HVAC: A/C compressor + its electric load via the alternator"),
+    ("aux_hvac", "aux_hvac_work_j",
+     "HVAC: A/C compressor + 24 V loads (HVAC, heater circulation pump) via the alternator"),
     ("fan", "fan_work_j", "cooling fan"),
     ("gearbox_drag", "gearbox_drag_loss_j", "gearbox drag"),
     ("converter", "converter_loss_j", "torque converter + lock-up slip"),
@@ -122,6 +124,9 @@ def energy_ledger(data):
         L["battery_losses"] = _last(bat, "loss_energy_j")
         L["battery_chemical"] = _last(bat, "chemical_energy_j")
         L["electric_residual"] = L["battery_terminal"] + L["battery_unmet"] - L["em_dc"] - L["dcdc"]
+    cool = data.get(COOLING_STATE)
+    if cool is not None and "electric_pump_energy_j" in cool:  # 24 V: in aux_hvac or the DC/DC
+        L["heater_pump"] = _last(cool, "electric_pump_energy_j")
     L.update(hvac.hvac_ledger(data))
     return {k: v / J_PER_KWH for k, v in L.items()}
 
@@ -197,6 +202,9 @@ def ledger_table(L):
                  ("battery losses (ohmic + polarisation)", "battery_losses"),
                  ("battery chemical energy (net, > 0 released)", "battery_chemical"),
                  ("residual of the electric path (terminal - DC - DC/DC)", "electric_residual")]
+    if "heater_pump" in L:
+        rows += [("heater circulation pump, 24 V electric (engine stopped; in aux_hvac via the "
+                  "alternator, or in the DC/DC)", "heater_pump")]
     rows += [(label, key) for key, label in hvac.LEDGER_ROWS if key in L]
     out = ["| path | kWh | % of fuel |", "|---|---|---|"]
     for label, key in rows:

@@ -119,8 +119,12 @@ def thermal_plots(data, save, plt):
     if cool is not None or ats is not None:
         fig, ax = plt.subplots(figsize=(12, 4.5))
         if cool is not None:
-            ax.plot(cool["t"], cool["coolant_ht_temperature_k"] - 273.15, lw=0.9, label="HT coolant")
+            ax.plot(cool["t"], cool["coolant_ht_temperature_k"] - 273.15, lw=0.9, label="HT coolant (engine outlet)")
             ax.plot(cool["t"], cool["metal_temperature_k"] - 273.15, lw=0.9, label="engine metal")
+            for f, lab in (("radiator_coolant_temperature_k", "radiator volume"),
+                           ("convector_coolant_temperature_k", "convector volume")):
+                if f in cool:  # the HT coolant volumes (src/cooling/coolant_network.hpp)
+                    ax.plot(cool["t"], cool[f] - 273.15, lw=0.7, ls="--", label=lab)
         if ats is not None:
             for f, lab in (("doc_temperature_k", "DOC"), ("dpf_temperature_k", "DPF"),
                            ("scr_temperature_k", "SCR"), ("asc_temperature_k", "ASC")):

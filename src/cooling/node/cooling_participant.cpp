@@ -133,6 +133,12 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.stored_energy_change_j = o.stored_change_J;
   s.energy_residual_j = o.energy_residual_J;
   s.warmup_time_s = o.warmup_time_s;
+  s.radiator_coolant_temperature_k = o.radiator_coolant_T_K;
+  s.convector_coolant_temperature_k = o.convector_coolant_T_K;
+  s.heater_valve_open = o.heater_valve_open;
+  s.heater_loop_flow_m3_s = o.heater_loop_flow_m3_s;
+  s.electric_pump_power_w = o.electric_pump_power_W;
+  s.electric_pump_energy_j = o.electric_pump_energy_J;
   state_pub_.publish(boost::make_shared<hybrid_bus_twin::CoolingState>(s));
 }
 

@@ -176,13 +176,15 @@ void VehicleParticipant::step(const ros::Time& t, double dt_s) {
   in.engine_min_torque_Nm = e.torque_min_nm;
   in.ambient_T_K = ambient_T_K_;
   if (cooling_) {
+    const auto& c = cooling_->at(t);
     in.has_fan_power = true;
-    in.fan_power_W = cooling_->at(t).fan_drive_power_w;  // crank side, incl. clutch slip
+    in.fan_power_W = c.fan_drive_power_w;  // crank side, incl. clutch slip
+    in.hvac_electric_W = c.electric_pump_power_w;  // heater circulation pump (24 V, engine stopped)
   }
   if (hvac_) {  // A/C compressor on the crank, the HVAC's 24 V load
     const auto& h = hvac_->at(t);
     in.hvac_compressor_W = h.compressor_power_w;
-    in.hvac_electric_W = h.electric_power_w;
+    in.hvac_electric_W += h.electric_power_w;
   }
   if (ems_) {  // the EMS's split for [t, t + dt]; the e-machine's torque of its step before
     const auto& c = ems_->at(t);

@@ -3,7 +3,8 @@
 // mission pre-processor hbt::mission::buildMissionProfile (src/mission), run once at start-up.
 //
 // Inputs  (stamped t_k): /engine/state (EngineState: brake torque, torque limits);
-//                        /cooling/state (CoolingState: fan shaft power on the crank) when the
+//                        /cooling/state (CoolingState: fan shaft power on the crank; the heater
+//                        circulation pump's 24 V load, booked with the HVAC's) when the
 //                        cooling participant runs (else aux/fan_default_W);
 //                        /hvac/state (HvacState: A/C compressor shaft power on the crank, the
 //                        HVAC's 24 V load via the alternator or the DC/DC) when the hvac runs.
