@@ -117,6 +117,7 @@ void CoolingModel::checkFinite(const CoolingInputs& in) const {
   chk(in.cabin_heat_demand_W, "cabin_heat_demand_W");
   chk(in.cabin_T_K, "cabin_T_K");
   chk(in.aux_heater_heat_W, "aux_heater_heat_W");
+  chk(in.gearbox_cooler_heat_W, "gearbox_cooler_heat_W");
   if (!(in.ambient_T_K > 200.0 && in.ambient_T_K < 350.0))
     throw InputError(where, "ambient_T_K", "outside [200, 350] K");
   if (!(in.ambient_p_Pa > 2e4 && in.ambient_p_Pa < 2e5))
@@ -235,7 +236,7 @@ void CoolingModel::solveTemperatures(const CoolingInputs& in, SubstepState& s) {
   k.preheat = s.pre;
   k.G_lt = s.G_lt;
   k.Q_engine = in.engine_heat_W - in.em_engine_heat_W;  // net heat into the metal: minus what the P1 flange takes
-  k.Q_aux = in.aux_heater_heat_W;
+  k.Q_aux = in.aux_heater_heat_W + in.gearbox_cooler_heat_W;  // both into the engine loop
   k.Q_lt = in.lt_heat_W;
   // Heater Q = min(D, q0 + g θ_v) taken at the new convector temperature: the branch the old
   // temperature picks, solved again on the other branch if the new temperature picks that one.
@@ -340,12 +341,13 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.em_engine_heat_W = in.em_engine_heat_W;
   o.em_engine_heat_J += in.em_engine_heat_W * h;
   o.aux_heater_J += in.aux_heater_heat_W * h;
+  o.gearbox_cooler_J += in.gearbox_cooler_heat_W * h;
   o.radiator_ht_J += f.radiator_ht * h;
   o.radiator_lt_J += f.radiator_lt * h;
   o.heater_J += f.heater * h;
   o.surface_loss_J += f.surface * h;
   o.stored_change_J = network_.storedSince_J(T_, T0_);
-  o.energy_residual_J = o.engine_heat_J + o.lt_heat_J + o.aux_heater_J - o.em_engine_heat_J - o.radiator_ht_J -
+  o.energy_residual_J = o.engine_heat_J + o.lt_heat_J + o.aux_heater_J + o.gearbox_cooler_J - o.em_engine_heat_J - o.radiator_ht_J -
                         o.radiator_lt_J - o.heater_J - o.surface_loss_J - o.stored_change_J;
 }
 

@@ -13,7 +13,8 @@
 // Thermal network (equations in coolant_network.hpp; Q̇ in W, C in J/K, G, W in W/K, T_a ambient):
 //   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_s (T_m - T_a) - Q̇_em   (Q̇_em: heat conducted into
 //                 the P1 e-machine's housing and rotor, which its LT heat then carries)
-//   C_c dT_c/dt = G_mc (T_m - T_c) - W_r (T_c - T_r) - W_v (T_c - T_v) + Q̇_aux   (Q̇_aux: fuel-fired heater)
+//   C_c dT_c/dt = G_mc (T_m - T_c) - W_r (T_c - T_r) - W_v (T_c - T_v) + Q̇_aux + Q̇_gb
+//                 (Q̇_aux: fuel-fired heater; Q̇_gb: the automatic gearbox's oil-to-coolant cooler)
 //   C_r dT_r/dt = W_r (T_c - T_r) - Q̇_rad,HT
 //   C_v dT_v/dt = W_v (T_c - T_v) - Q̇_heater
 //   C_l dT_l/dt = Q̇_LT,in - Q̇_rad,LT
@@ -90,6 +91,7 @@ struct CoolingInputs {
   double cabin_heat_demand_W = 0.0;    // heat the cabin asks of the convectors [W]
   double cabin_T_K = 293.15;           // cabin temperature [K] (convector driving difference)
   double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the HT coolant [W]
+  double gearbox_cooler_heat_W = 0.0;  // the AT's oil-to-coolant cooler into the HT engine loop [W]
 };
 
 struct CoolingOutputs {
@@ -120,6 +122,7 @@ struct CoolingOutputs {
   double electric_pump_energy_J = 0.0; // 24 V heater circulation pump, electric
   double engine_heat_J = 0.0, lt_heat_J = 0.0, aux_heater_J = 0.0;
   double em_engine_heat_W = 0.0, em_engine_heat_J = 0.0;  // engine metal -> e-machine [W], [J]
+  double gearbox_cooler_J = 0.0;       // the AT's oil cooler into the HT engine loop [J]
   double radiator_ht_J = 0.0, radiator_lt_J = 0.0, heater_J = 0.0, surface_loss_J = 0.0;
   double stored_change_J = 0.0;        // Σ C (T - T_0) over metal, the three HT volumes and LT
   double energy_residual_J = 0.0;      // in - out - stored change (ideally 0)

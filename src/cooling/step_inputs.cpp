@@ -14,6 +14,7 @@ CoolingInputs StepInputs::next(const CoolingTotals& now, const CoolingInputs& po
     in.lt_heat_W = meanRate(now.lt_heat_J, prev_.lt_heat_J, dt_s);
     in.em_engine_heat_W = meanRate(now.em_engine_heat_J, prev_.em_engine_heat_J, dt_s);
     in.aux_heater_heat_W = meanRate(now.aux_heater_heat_J, prev_.aux_heater_heat_J, dt_s);
+    in.gearbox_cooler_heat_W = meanRate(now.gearbox_cooler_heat_J, prev_.gearbox_cooler_heat_J, dt_s);
   }
   prev_ = now;
   started_ = true;

@@ -7,6 +7,7 @@
 //   ω_pump = Δθ / Δt         mechanical HT pump speed = the crank's mean speed (1:1) [rad/s], >= 0
 //   Q̇_LT = ΔQ_LT / Δt       e-machine + inverter heat into the LT coolant [W]
 //   Q̇_em = ΔQ_em / Δt       heat the e-machine draws from the engine metal [W]
+//   Q̇_gb = ΔQ_gb / Δt       the AT's oil cooler into the HT engine loop [W]
 //   Q̇_aux = ΔQ_aux / Δt     fuel-fired heater's heat into the HT coolant [W] (hvac participant)
 // An engine stop inside the step gives the mean of its running and stopped parts (the pump's
 // flow falls with its mean speed, the heat with the fuel); a step wholly stopped gives 0 W and
@@ -24,6 +25,7 @@ struct CoolingTotals {
   double lt_heat_J = 0.0;       // heat into the LT coolant [J] (0 without an e-machine)
   double em_engine_heat_J = 0.0;  // heat the e-machine drew from the engine metal [J] (0 without one)
   double aux_heater_heat_J = 0.0;  // fuel-fired heater's heat into the HT coolant [J] (0 without hvac)
+  double gearbox_cooler_heat_J = 0.0;  // the AT's oil cooler into the HT coolant [J] (VehicleToCooling)
 };
 
 class StepInputs {

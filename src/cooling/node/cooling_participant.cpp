@@ -68,6 +68,7 @@ void CoolingParticipant::step(const ros::Time& t, double dt_s) {
   point.ambient_T_K = v.ambient_temperature_k > 0.0 ? v.ambient_temperature_k : ambient_T_K_;
   point.ambient_p_Pa = ambient_p_Pa_;
   point.fan_demand = v.fan_demand;
+  now.gearbox_cooler_heat_J = v.gearbox_cooler_heat_j;  // the AT's oil cooler (first step: 0 W)
   if (emachine_) {  // e-machine + inverter heat into the LT coolant (hybrid)
     const auto& m = emachine_->at(t);
     now.lt_heat_J = m.heat_to_coolant_energy_j;
@@ -129,6 +130,7 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.radiator_lt_j = o.radiator_lt_J;
   s.heater_j = o.heater_J;
   s.aux_heater_j = o.aux_heater_J;
+  s.gearbox_cooler_heat_j = o.gearbox_cooler_J;
   s.surface_loss_j = o.surface_loss_J;
   s.stored_energy_change_j = o.stored_change_J;
   s.energy_residual_j = o.energy_residual_J;

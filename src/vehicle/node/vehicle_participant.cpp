@@ -294,6 +294,7 @@ void VehicleParticipant::publishOutputs(const ros::Time& t) {
   vc.vehicle_speed_m_s = o.speed_m_s;
   vc.distance_m = o.distance_m;
   vc.ambient_temperature_k = ambient_T_K_;
+  vc.gearbox_cooler_heat_j = model_->gearboxOil().toCooler_J();  // oil-to-coolant cooler -> HT engine loop
   cooling_pub_.publish(boost::make_shared<hybrid_bus_twin::VehicleToCooling>(vc));
 }
 
