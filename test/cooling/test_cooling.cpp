@@ -278,9 +278,10 @@ TEST(CoolingModel, EnergyBalanceOverColdTransientWithHeaterAndLt) {
     in.vehicle_speed_m_s = 8.0 + 8.0 * std::sin(2 * units::kPi * t / 90.0);
     in.lt_heat_W = 3e3 * (1.0 + std::sin(2 * units::kPi * t / 45.0));
     in.em_engine_heat_W = 1.2e3 * (0.5 + 0.5 * std::sin(2 * units::kPi * t / 70.0));  // metal -> P1 flange
+    in.gearbox_cooler_heat_W = t > 2000.0 ? 2.5e3 * (0.5 + 0.5 * std::sin(2 * units::kPi * t / 33.0)) : 0.0;
     m.step(dt, in);
     const CoolingOutputs& o = m.outputs();
-    e_in += (in.engine_heat_W + in.lt_heat_W - in.em_engine_heat_W) * dt;
+    e_in += (in.engine_heat_W + in.lt_heat_W - in.em_engine_heat_W + in.gearbox_cooler_heat_W) * dt;
     e_out += (o.radiator_ht_heat_W + o.radiator_lt_heat_W + o.heater_heat_W + o.surface_loss_W) * dt;
     heater_max = std::max(heater_max, o.heater_heat_W);
   }
@@ -291,8 +292,9 @@ TEST(CoolingModel, EnergyBalanceOverColdTransientWithHeaterAndLt) {
                         C.lt * (o.coolant_lt_T_K - Ta);
   EXPECT_NEAR(e_in - e_out - stored, 0.0, 1e-6 * e_in);
   EXPECT_NEAR(o.energy_residual_J, 0.0, 1e-6 * e_in);
-  EXPECT_NEAR(o.engine_heat_J + o.lt_heat_J - o.em_engine_heat_J, e_in, 1e-9 * e_in);
+  EXPECT_NEAR(o.engine_heat_J + o.lt_heat_J - o.em_engine_heat_J + o.gearbox_cooler_J, e_in, 1e-9 * e_in);
   EXPECT_GT(o.em_engine_heat_J, 0.0);
+  EXPECT_GT(o.gearbox_cooler_J, 0.0);
   // Heater at 0 degC: demand UA (15 - 0) K = 12 kW once the coolant is warm.
   EXPECT_NEAR(heater_max, p.heater.cabin_UA_W_K * 15.0, 1e-6);
   EXPECT_GT(o.heater_J, 0.0);
