@@ -1,4 +1,4 @@
-#include "fmi/cs_instance.hpp"
+#include "fmi/fmi2_instance.hpp"
 
 #include <cmath>
 #include <cstdarg>
@@ -24,9 +24,9 @@ std::string timeText(double t_s) {
 }
 }  // namespace
 
-void CsInstance::logMessage(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
+void Fmi2Instance::logMessage(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
                             fmi2String category, fmi2String message, ...) {
-  auto* self = static_cast<CsInstance*>(env);
+  auto* self = static_cast<Fmi2Instance*>(env);
   if (!self || !self->sink_) return;
   std::string text;
   if (message) {
@@ -48,18 +48,17 @@ void CsInstance::logMessage(fmi2ComponentEnvironment env, fmi2String instance, f
   }
 }
 
-CsInstance::CsInstance(std::shared_ptr<const LoadedFmu> fmu, const std::string& instance_name,
-                       LogSink sink)
+Fmi2Instance::Fmi2Instance(std::shared_ptr<const LoadedFmu> fmu, const std::string& instance_name,
+                           LogSink sink)
     : fmu_(std::move(fmu)), f_(fmu_->functions()), name_(instance_name), sink_(std::move(sink)) {
-  if (fmu_->interfaceType() != InterfaceType::kCoSimulation) {
-    throw FmuError(fmu_->file(), "loaded as ModelExchange, not CoSimulation");
-  }
-  callbacks_.logger = &CsInstance::logMessage;
+  const bool cs = fmu_->interfaceType() == InterfaceType::kCoSimulation;
+  callbacks_.logger = &Fmi2Instance::logMessage;
   callbacks_.allocateMemory = &std::calloc;
   callbacks_.freeMemory = &std::free;
-  callbacks_.stepFinished = nullptr;  // synchronous doStep
+  callbacks_.stepFinished = nullptr;  // Co-Simulation: synchronous doStep
   callbacks_.componentEnvironment = this;
-  c_ = f_.instantiate(name_.c_str(), fmi2CoSimulation, fmu_->modelDescription().guid().c_str(),
+  c_ = f_.instantiate(name_.c_str(), cs ? fmi2CoSimulation : fmi2ModelExchange,
+                      fmu_->modelDescription().guid().c_str(),
                       fmu_->resourceUri().c_str(), &callbacks_, fmi2False, fmi2True);
   if (!c_) {
     throw FmuError(fmu_->file(), "fmi2Instantiate of instance '" + name_ +
@@ -67,25 +66,25 @@ CsInstance::CsInstance(std::shared_ptr<const LoadedFmu> fmu, const std::string& 
   }
 }
 
-CsInstance::~CsInstance() {
+Fmi2Instance::~Fmi2Instance() {
   if (state_ == State::kFatal) return;  // the standard allows no further call
   if (state_ == State::kStepping || state_ == State::kInitialization) f_.terminate(c_);
   f_.freeInstance(c_);
 }
 
-void CsInstance::fail(const std::string& call, const std::string& what) const {
+void Fmi2Instance::fail(const std::string& call, const std::string& what) const {
   throw ModelDivergence("FMU " + fmu_->file() + " instance '" + name_ + "'", call,
                         what + " at " + timeText(time_s_));
 }
 
-void CsInstance::check(fmi2Status s, const std::string& call) {
+void Fmi2Instance::check(fmi2Status s, const std::string& call) {
   if (s == fmi2OK || s == fmi2Warning) return;
   if (s == fmi2Error) state_ = State::kError;
   if (s == fmi2Fatal) state_ = State::kFatal;
   fail(call, std::string("returned ") + statusName(s));
 }
 
-VariableRef CsInstance::gettable(const std::string& name, VarType t) const {
+VariableRef Fmi2Instance::gettable(const std::string& name, VarType t) const {
   const ScalarVariable& v = fmu_->modelDescription().variable(name);
   if (v.type != t) {
     throw FmuError(fmu_->file(), "variable '" + name + "' is " + fmi::name(v.type) + ", not " +
@@ -94,7 +93,7 @@ VariableRef CsInstance::gettable(const std::string& name, VarType t) const {
   return {&v, v.value_reference};
 }
 
-VariableRef CsInstance::settable(const std::string& name, VarType t) const {
+VariableRef Fmi2Instance::settable(const std::string& name, VarType t) const {
   const VariableRef ref = gettable(name, t);
   const ScalarVariable& v = *ref.variable;
   const bool input = v.causality == Causality::kInput;
@@ -109,7 +108,7 @@ VariableRef CsInstance::settable(const std::string& name, VarType t) const {
   return ref;
 }
 
-void CsInstance::setupExperiment(std::optional<double> tolerance, double start_s,
+void Fmi2Instance::setupExperiment(std::optional<double> tolerance, double start_s,
                                  std::optional<double> stop_s) {
   time_s_ = start_s;
   stop_s_ = stop_s;
@@ -118,17 +117,17 @@ void CsInstance::setupExperiment(std::optional<double> tolerance, double start_s
         "fmi2SetupExperiment");
 }
 
-void CsInstance::enterInitializationMode() {
+void Fmi2Instance::enterInitializationMode() {
   check(f_.enterInitializationMode(c_), "fmi2EnterInitializationMode");
   state_ = State::kInitialization;
 }
 
-void CsInstance::exitInitializationMode() {
+void Fmi2Instance::exitInitializationMode() {
   check(f_.exitInitializationMode(c_), "fmi2ExitInitializationMode");
   state_ = State::kStepping;
 }
 
-void CsInstance::requireSet(const VariableRef& v, VarType t) const {
+void Fmi2Instance::requireSet(const VariableRef& v, VarType t) const {
   if (v.variable->type != t) {
     fail(std::string("set ") + fmi::name(t) + " '" + v.variable->name + "'",
          std::string("the variable is ") + fmi::name(v.variable->type));
@@ -138,50 +137,48 @@ void CsInstance::requireSet(const VariableRef& v, VarType t) const {
   }
 }
 
-void CsInstance::setReal(const VariableRef& v, double value) {
+void Fmi2Instance::setReal(const VariableRef& v, double value) {
   requireSet(v, VarType::kReal);
   check(f_.setReal(c_, &v.vr, 1, &value), "fmi2SetReal '" + v.variable->name + "'");
 }
 
-void CsInstance::setInteger(const VariableRef& v, int value) {
+void Fmi2Instance::setInteger(const VariableRef& v, int value) {
   requireSet(v, v.variable->type == VarType::kEnumeration ? VarType::kEnumeration : VarType::kInteger);
   check(f_.setInteger(c_, &v.vr, 1, &value), "fmi2SetInteger '" + v.variable->name + "'");
 }
 
-void CsInstance::setBoolean(const VariableRef& v, bool value) {
+void Fmi2Instance::setBoolean(const VariableRef& v, bool value) {
   requireSet(v, VarType::kBoolean);
   const fmi2Boolean b = value ? fmi2True : fmi2False;
   check(f_.setBoolean(c_, &v.vr, 1, &b), "fmi2SetBoolean '" + v.variable->name + "'");
 }
 
-double CsInstance::getReal(const VariableRef& v) {
+double Fmi2Instance::getReal(const VariableRef& v) {
   double value = 0.0;
   check(f_.getReal(c_, &v.vr, 1, &value), "fmi2GetReal '" + v.variable->name + "'");
   if (std::isnan(value)) fail("variable '" + v.variable->name + "'", "NaN output");
   return value;
 }
 
-int CsInstance::getInteger(const VariableRef& v) {
+int Fmi2Instance::getInteger(const VariableRef& v) {
   fmi2Integer value = 0;
   check(f_.getInteger(c_, &v.vr, 1, &value), "fmi2GetInteger '" + v.variable->name + "'");
   return value;
 }
 
-bool CsInstance::getBoolean(const VariableRef& v) {
+bool Fmi2Instance::getBoolean(const VariableRef& v) {
   fmi2Boolean value = fmi2False;
   check(f_.getBoolean(c_, &v.vr, 1, &value), "fmi2GetBoolean '" + v.variable->name + "'");
   return value != fmi2False;
 }
 
-void CsInstance::doStep(double h_s) {
-  if (state_ != State::kStepping) fail("fmi2DoStep", "called before exitInitializationMode or after an error");
-  if (!(h_s > 0.0)) fail("fmi2DoStep", "step size " + std::to_string(h_s) + " s is not > 0");
+void Fmi2Instance::checkStep(const char* call, double h_s) const {
+  if (state_ != State::kStepping) fail(call, "called before exitInitializationMode or after an error");
+  if (!(h_s > 0.0)) fail(call, "step size " + std::to_string(h_s) + " s is not > 0");
   if (stop_s_ && time_s_ + h_s > *stop_s_ * (1.0 + 1e-12)) {
-    fail("fmi2DoStep", "a step of " + std::to_string(h_s) + " s would pass the stop time " +
-                           std::to_string(*stop_s_) + " s");
+    fail(call, "a step of " + std::to_string(h_s) + " s would pass the stop time " +
+                   std::to_string(*stop_s_) + " s");
   }
-  check(f_.doStep(c_, time_s_, h_s, fmi2True), "fmi2DoStep");
-  time_s_ += h_s;
 }
 
 }  // namespace hbt::fmi

@@ -1,7 +1,7 @@
-// One instance of an FMI 2.0 Co-Simulation FMU (FMI 2.0 chapter 4), driven as the standard's
-// state machine wants it: instantiate (resources location = LoadedFmu::resourceUri(), the
-// callbacks below) -> setupExperiment (tolerance, start, stop) -> enter/exit initialisation ->
-// set inputs, doStep(h), get outputs ... -> terminate and free (destructor).
+// What an instance of an FMI 2.0 FMU does in both interface types (FMI 2.0 section 2.1): instantiate
+// (resources location = LoadedFmu::resourceUri(), the callbacks below) -> setupExperiment
+// (tolerance, start, stop) -> enter/exit initialisation -> set and get variables -> terminate and
+// free (destructor). CsInstance and MeInstance add the stepping of their interface type.
 //
 // Variables are resolved by name once (settable()/gettable(): type and causality checked) and
 // then set and read through their value references. Status fmi2OK and fmi2Warning pass; any
@@ -30,14 +30,14 @@ struct VariableRef {
   fmi2ValueReference vr = 0;
 };
 
-class CsInstance {
+class Fmi2Instance {
  public:
-  /// Instantiates fmu (loaded as Co-Simulation) as instance_name; FmuError if fmi2Instantiate
+  /// Instantiates fmu as instance_name with fmu's interface type; FmuError if fmi2Instantiate
   /// returns NULL (its log messages, in sink, say why).
-  CsInstance(std::shared_ptr<const LoadedFmu> fmu, const std::string& instance_name, LogSink sink);
-  ~CsInstance();
-  CsInstance(const CsInstance&) = delete;
-  CsInstance& operator=(const CsInstance&) = delete;
+  Fmi2Instance(std::shared_ptr<const LoadedFmu> fmu, const std::string& instance_name, LogSink sink);
+  virtual ~Fmi2Instance();
+  Fmi2Instance(const Fmi2Instance&) = delete;
+  Fmi2Instance& operator=(const Fmi2Instance&) = delete;
 
   /// A variable of type t the importer may set: causality input, or a parameter whose
   /// variability is fixed or tunable. FmuError naming the variable otherwise.
@@ -48,7 +48,8 @@ class CsInstance {
   /// fmi2SetupExperiment; the communication time starts at start_s.
   void setupExperiment(std::optional<double> tolerance, double start_s, std::optional<double> stop_s);
   void enterInitializationMode();
-  void exitInitializationMode();
+  /// Leaves initialisation (Model Exchange: and runs the event iteration, then continuous-time mode).
+  virtual void exitInitializationMode();
 
   void setReal(const VariableRef& v, double value);
   void setInteger(const VariableRef& v, int value);
@@ -58,21 +59,24 @@ class CsInstance {
   int getInteger(const VariableRef& v);
   bool getBoolean(const VariableRef& v);
 
-  /// fmi2DoStep from time() over h_s [s] > 0; time() advances by h_s. A step beyond the stop
-  /// time given to setupExperiment throws before calling the FMU.
-  void doStep(double h_s);
-  /// The current communication point [s].
+  /// The current time [s] (communication point, or the integrator's time).
   double time() const { return time_s_; }
   const std::string& instanceName() const { return name_; }
   const LoadedFmu& fmu() const { return *fmu_; }
 
- private:
+ protected:
   enum class State { kInstantiated, kInitialization, kStepping, kError, kFatal };
+  void check(fmi2Status s, const std::string& call);
+  [[noreturn]] void fail(const std::string& what_call, const std::string& what) const;
+  /// The common checks of a step of h_s [s] from time().
+  void checkStep(const char* call, double h_s) const;
+
+ private:
   static void logMessage(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
                          fmi2String category, fmi2String message, ...);
-  void check(fmi2Status s, const std::string& call);
   void requireSet(const VariableRef& v, VarType t) const;
-  [[noreturn]] void fail(const std::string& what_call, const std::string& what) const;
+
+ protected:
 
   std::shared_ptr<const LoadedFmu> fmu_;
   const Fmi2Functions& f_;

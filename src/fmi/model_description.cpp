@@ -114,6 +114,19 @@ class ModelDescriptionParser {
     }
   }
 
+  void parseStructure(const XMLElement& root) {
+    const XMLElement* s = root.FirstChildElement("ModelStructure");
+    const XMLElement* d = s ? s->FirstChildElement("Derivatives") : nullptr;
+    if (!d) return;
+    for (const XMLElement* u = d->FirstChildElement("Unknown"); u; u = u->NextSiblingElement("Unknown")) {
+      const long index = integer(*u, "index", -1, "<Derivatives> <Unknown>");
+      if (index < 1 || index > static_cast<long>(md_.variables_.size())) {
+        fail("<Derivatives> <Unknown index=\"" + std::to_string(index) + "\"> is not a variable's index");
+      }
+      ++md_.n_states_;
+    }
+  }
+
   [[noreturn]] void fail(const std::string& what) const { throw FmuError(md_.fmu_file_, "modelDescription.xml: " + what); }
 
  private:
@@ -218,6 +231,7 @@ ModelDescription ModelDescription::parse(const std::string& xml, const std::stri
   p.parseUnits(*root);
   p.parseTypes(*root);
   p.parseVariables(*root);
+  p.parseStructure(*root);
   return md;
 }
 

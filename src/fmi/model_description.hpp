@@ -61,6 +61,8 @@ class ModelDescription {
   const std::optional<std::string>& modelExchangeId() const { return me_id_; }
   const DefaultExperiment& defaultExperiment() const { return experiment_; }
   int numberOfEventIndicators() const { return n_event_indicators_; }
+  /// Continuous states: the <Unknown> elements of ModelStructure/Derivatives (Model Exchange).
+  int numberOfContinuousStates() const { return n_states_; }
   const std::map<std::string, UnitDefinition>& units() const { return units_; }
   const std::map<std::string, SimpleType>& types() const { return types_; }
   /// In the order of ModelVariables (index + 1 = the index ModelStructure refers to).
@@ -77,6 +79,7 @@ class ModelDescription {
   std::optional<std::string> cs_id_, me_id_;
   DefaultExperiment experiment_;
   int n_event_indicators_ = 0;
+  int n_states_ = 0;
   std::map<std::string, UnitDefinition> units_;
   std::map<std::string, SimpleType> types_;
   std::vector<ScalarVariable> variables_;
