@@ -1,7 +1,7 @@
 /* The FMI 2.0 C interface as this project uses it, written from the published standard
  * (Functional Mock-up Interface for Model Exchange and Co-Simulation, version 2.0, Modelica
- * Association, 2014: sections 2.1.2 "Platform dependent definitions", 2.1.4-2.1.9 and 3.2,
- * 4.2). Plain C, so that the test FMUs (test/fmi/fmus, C) and the importer (C++) share it.
+ * Association, 2014; 2.0.4, 2022: section 2.1, the application programming interface common to
+ * both interface types; section 3.2, Model Exchange; section 4.2, Co-Simulation). Plain C, so that the test FMUs (test/fmi/fmus, C) and the importer (C++) share it.
  *
  * A shared library of an FMU exports the functions under their plain names (fmi2DoStep, ...).
  * The hbt_fmi2_*_fn names below are the function types of those exports; the importer resolves

@@ -3,8 +3,9 @@
 // destructor. Every function the interface type needs is resolved by its plain FMI 2.0 name; a
 // missing one is an FmuError naming it. Required: the functions common to both interface types
 // apart from the capability-dependent ones (FMU state, serialisation, directional derivatives),
-// plus, for Co-Simulation, fmi2DoStep, fmi2CancelStep and the fmi2Get*Status family, for Model
-// Exchange the functions of FMI 2.0 section 3.2. The capability-dependent ones are resolved if
+// plus, for Co-Simulation, fmi2DoStep, fmi2CancelStep and the fmi2Get*Status family (input and
+// output derivatives are capability-dependent), for Model Exchange the functions of FMI 2.0
+// section 3.2. The capability-dependent ones are resolved if
 // present (nullptr otherwise).
 #pragma once
 #include <string>

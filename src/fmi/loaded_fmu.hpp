@@ -23,8 +23,9 @@ class LoadedFmu {
   InterfaceType interfaceType() const { return library_->interfaceType(); }
   /// The absolute extraction directory.
   const std::string& directory() const { return dir_; }
-  /// The resources location handed to fmi2Instantiate (FMI 2.0 section 2.1.6): the URI
-  /// (RFC 3986, scheme file) of <directory>/resources, e.g. "file:///tmp/x/resources".
+  /// The resources location handed to fmi2Instantiate (FMI 2.0 section 2.1.5): the URI
+  /// (RFC 3986, scheme file, empty authority) of <directory>/resources without a trailing
+  /// slash, as the standard's example writes it: "file:///tmp/x/resources".
   const std::string& resourceUri() const { return resource_uri_; }
 
  private:

@@ -1,6 +1,6 @@
 // One instance of an FMI 2.0 Model Exchange FMU (FMI 2.0 chapter 3) integrated by SUNDIALS
-// CVODE (BDF, hbt::CvodeSolver) over each macro step [t, t + h], as section 3.2.4 of the
-// standard lays out the importer's loop:
+// CVODE (BDF, hbt::CvodeSolver) over each macro step [t, t + h], as section 3.2 of the standard
+// (its state machine and its importer's pseudo-code) lays out the loop:
 //   - between events the continuous states x (FMU's units) follow dx/dt = f(t, x, u) with the
 //     inputs u held; CVODE calls fmi2SetTime, fmi2SetContinuousStates, fmi2GetDerivatives;
 //   - time events: the integration stops exactly at the FMU's nextEventTime;

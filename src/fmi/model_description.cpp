@@ -150,7 +150,7 @@ class ModelDescriptionParser {
     if (const char* unit = elem->Attribute("unit")) sv.unit = checkedUnit(unit, where);
     if (const char* start = elem->Attribute("start")) sv.start = start;
     if (sv.causality == Causality::kInput && !sv.start) {
-      fail(where + ": an input needs a start value (FMI 2.0 section 2.2.7)");
+      fail(where + ": an input needs a start value (FMI 2.0, ScalarVariable: start is required for causality input)");
     }
     return sv;
   }

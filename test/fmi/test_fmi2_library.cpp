@@ -44,7 +44,6 @@ TEST(Fmi2Library, ModelExchangeFunctionsRequiredForModelExchange) {
 }
 
 TEST(Fmi2Library, UnloadableBinaryNamed) {
-  const std::string dir = testing::freshDir("x");
   const std::string not_elf = std::string(HBT_TEST_FMU_SOURCE_DIR) + "/resources/thermal_mass.txt";
   expectThrowWith<FmuError>([&] { Fmi2Library lib(not_elf, InterfaceType::kCoSimulation, "f.fmu"); },
                             {"f.fmu", "cannot load binary", "thermal_mass.txt"});

@@ -32,12 +32,15 @@ static void log_msg(Instance* m, fmi2Status s, const char* category, const char*
   if (m->cb.logger) m->cb.logger(m->cb.componentEnvironment, m->name, s, category, text, arg);
 }
 
-/* file:///a/b%20c -> /a/b c; 0 if uri is not a file URI with an absolute path */
+/* file:///a/b%20c or file:/a/b%20c (with or without the empty authority, as FMI 2.0 wants an FMU
+ * to understand both) -> /a/b c; 0 if uri is not a file URI with an absolute path */
 static int uri_to_path(const char* uri, char* path, size_t size) {
   const char* p;
   size_t n = 0;
-  if (!uri || strncmp(uri, "file://", 7) != 0 || uri[7] != '/') return 0;
-  for (p = uri + 7; *p && n + 1 < size; ++p) {
+  if (!uri || strncmp(uri, "file:", 5) != 0) return 0;
+  p = strncmp(uri, "file://", 7) == 0 ? uri + 7 : uri + 5;
+  if (*p != '/') return 0;
+  for (; *p && n + 1 < size; ++p) {
     unsigned int byte;
     if (*p == '%' && sscanf(p + 1, "%2x", &byte) == 1) {
       path[n++] = (char)byte;
