@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -16,6 +17,19 @@ inline std::string testFmu(const std::string& name) {
   return std::string(HBT_TEST_FMU_DIR) + "/" + name + ".fmu";
 }
 
+/// The directories freshDir() made in this process, removed after the last test.
+class FreshDirs : public ::testing::Environment {
+ public:
+  static std::vector<std::filesystem::path>& made() {
+    static std::vector<std::filesystem::path> dirs;
+    return dirs;
+  }
+  void TearDown() override {
+    for (const auto& d : made()) std::filesystem::remove_all(d);
+  }
+};
+inline ::testing::Environment* const kFreshDirs = ::testing::AddGlobalTestEnvironment(new FreshDirs);
+
 /// An empty directory below the system's temporary directory, unique per test and process.
 inline std::string freshDir(const std::string& tag) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -23,6 +37,7 @@ inline std::string freshDir(const std::string& tag) {
       ("hbt_fmi_" + std::to_string(::getpid()) + "_" + info->name() + "_" + tag);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  FreshDirs::made().push_back(dir);
   return dir.string();
 }
 

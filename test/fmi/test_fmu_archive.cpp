@@ -73,8 +73,6 @@ TEST(FmuArchive, ExtractsEveryEntryByteForByteAndDeterministically) {
   }
   EXPECT_EQ(files, 3);  // modelDescription.xml, the binary, the resources file
   EXPECT_TRUE(fs::is_regular_file(fs::path(dir1) / "resources/thermal_mass.txt"));
-  fs::remove_all(dir1);
-  fs::remove_all(dir2);
 }
 
 }  // namespace
