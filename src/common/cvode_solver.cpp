@@ -103,6 +103,26 @@ void CvodeSolver::addQuadratures(int nq, CVQuadRhsFn rhsQ, const std::vector<dou
   check(CVodeSetQuadErrCon(mem_, SUNTRUE), "CVodeSetQuadErrCon");
 }
 
+void CvodeSolver::addRootFunctions(int nroots, CVRootFn g) {
+  if (!roots_found_.empty() || nroots <= 0)
+    throw ModelDivergence(owner_, "CVODE", "root functions: added once, nroots > 0");
+  check(CVodeRootInit(mem_, nroots, g), "CVodeRootInit");
+  roots_found_.assign(static_cast<std::size_t>(nroots), 0);
+}
+
+double CvodeSolver::step(double t_out, const char* quantity, bool* root) {
+  realtype t = 0.0;
+  const int flag = CVode(mem_, t_out, y_, &t, CV_ONE_STEP);
+  if (flag < 0) throw ModelDivergence(owner_, quantity, "CVODE failed: " + flagName(flag));
+  *root = flag == CV_ROOT_RETURN;
+  return t;
+}
+
+const std::vector<int>& CvodeSolver::rootsFound() {
+  if (!roots_found_.empty()) check(CVodeGetRootInfo(mem_, roots_found_.data()), "CVodeGetRootInfo");
+  return roots_found_;
+}
+
 double* CvodeSolver::quadratures() { return q_ ? N_VGetArrayPointer(q_) : nullptr; }
 void CvodeSolver::setStopTime(double t_stop) { check(CVodeSetStopTime(mem_, t_stop), "CVodeSetStopTime"); }
 void CvodeSolver::setTolerances(double rtol) {

@@ -50,6 +50,16 @@ class CvodeSolver {
   /// it throws.
   long advance(double t_out, const char* quantity);
 
+  /// Root functions (optional): CVODE locates the zero crossings of g_i(t, y), i < nroots,
+  /// during step(). Call once, after construction.
+  void addRootFunctions(int nroots, CVRootFn g);
+  /// One internal step towards t_out [s], never past the stop time (CV_ONE_STEP mode): the
+  /// state in y() at the returned time [s]. *root: a root function crossed zero (its direction
+  /// in rootsFound()); the returned time is the crossing. A failure throws naming `quantity`.
+  double step(double t_out, const char* quantity, bool* root);
+  /// After step() returned a root: per root function 0 (none), +1 (rising) or -1 (falling).
+  const std::vector<int>& rootsFound();
+
   /// Adds nq quadratures dq/dt = rhsQ(t, y, user_data) with absolute tolerances atolQ (one
   /// per quadrature, in q's units) and the state's relative tolerance; q = 0 at t = 0. Call once,
   /// after construction.
@@ -69,6 +79,7 @@ class CvodeSolver {
   SUNMatrix A_ = nullptr;
   SUNLinearSolver LS_ = nullptr;
   void* mem_ = nullptr;
+  std::vector<int> roots_found_;
 };
 
 }  // namespace hbt

@@ -1,6 +1,7 @@
 // CvodeSolver: integrates a linear decay to CVODE's tolerance, its quadratures to their exact
-// integrals (restarting from the values set), and names CVODE's flag and the owner when the
-// integration fails.
+// integrals (restarting from the values set), steps one internal step at a time to a stop time
+// and locates a root of a root function at its exact crossing time, and names CVODE's flag and
+// the owner when the integration fails.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -96,4 +97,42 @@ TEST(CvodeSolver, FailuresNameOwnerQuantityAndFlag) {
 TEST(CvodeSolver, RejectsAToleranceCountOtherThanTheEquations) {
   double k = 1.0;
   EXPECT_THROW(hbt::CvodeSolver("decay", 2, &decay, &k, 1e-6, {1e-12}, 100), hbt::ModelDivergence);
+}
+
+namespace {
+// g = y - 1/2: crosses zero (falling) at t = ln 2 / k for y = exp(-k t)
+int halfLevel(realtype, N_Vector y, realtype* g, void*) {
+  g[0] = N_VGetArrayPointer(y)[0] - 0.5;
+  return 0;
+}
+}  // namespace
+
+TEST(CvodeSolver, StepsToTheStopTimeAndLocatesARoot) {
+  double k = 2.0;
+  hbt::CvodeSolver s("decay", 1, &decay, &k, 1e-10, {1e-14}, 5000);
+  s.addRootFunctions(1, &halfLevel);
+  s.y()[0] = 1.0;
+  s.reinit();
+  s.setStopTime(1.0);
+  double t = 0.0, t_root = -1.0;
+  int steps = 0, roots = 0;
+  while (t < 1.0) {
+    bool root = false;
+    const double t_new = s.step(1.0, "y", &root);
+    EXPECT_GT(t_new, t);  // one internal step forward, never past the stop time
+    EXPECT_LE(t_new, 1.0);
+    t = t_new;
+    ++steps;
+    if (root) {
+      ++roots;
+      t_root = t;
+      EXPECT_EQ(s.rootsFound().at(0), -1);  // falling
+      EXPECT_NEAR(s.y()[0], 0.5, 1e-9);
+    }
+  }
+  EXPECT_EQ(t, 1.0);
+  EXPECT_GT(steps, 2);
+  EXPECT_EQ(roots, 1);
+  EXPECT_NEAR(t_root, std::log(2.0) / k, 1e-9);
+  EXPECT_NEAR(s.y()[0], std::exp(-k), 1e-8);
 }
