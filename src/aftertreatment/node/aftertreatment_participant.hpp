@@ -11,9 +11,9 @@
 // Parameters: private namespace = config/aftertreatment.yaml (AtsParams::declare; the macro step
 // P = cosim/macro_step_s, 0.1 s: a thermal node); /scenario/ambient_temperature_c,
 // /scenario/ambient_pressure_pa (tailpipe pressure).
-// Initial state: cold start -- every brick (substrate, washcoat, can) at the scenario ambient
-// temperature, the SCR store at scr_kinetics/initial_coverage (0 = empty), back-pressure =
-// ambient pressure.
+// Initial state: cold start -- every brick (substrate, washcoat, can) and every exhaust-line wall
+// at the scenario ambient temperature, the SCR store at scr_kinetics/initial_coverage (0 =
+// empty), the DPF at dpf_flow/soot_load_g_L, back-pressure = ambient pressure.
 // Time stepping: one model step per macro step P, fed the exact means of the 10 ms producers over
 // the last P from their cumulative totals (../step_inputs.hpp).
 // Diagnostics (docs/diagnostics.md): warning ats_below_light_off (the SCR not lit off --
