@@ -25,6 +25,7 @@ void declareSegment(ParamSet& ps, const std::string& name, PipeSegmentParams& s)
   ps.setPrefix("line/" + name + "/");
   ps.add("length_m", s.length_m, "m", 0.01, 10.0, "gas path length");
   ps.add("diameter_m", s.diameter_m, "m", 0.01, 1.0, "hydraulic diameter of the gas path");
+  ps.add("inner_area_m2", s.inner_area_m2, "m^2", 0.001, 10.0, "wetted area of the gas path");
   ps.add("wall_mass_kg", s.wall_mass_kg, "kg", 0.01, 200.0, "wall mass at one temperature");
   ps.add("wall_cp_J_kgK", s.wall_cp_J_kgK, "J/(kg K)", 300.0, 2000.0, "wall specific heat");
   ps.add("outer_area_m2", s.outer_area_m2, "m^2", 0.0, 10.0, "outer surface losing heat");

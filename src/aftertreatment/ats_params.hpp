@@ -26,7 +26,8 @@ struct BrickParams {
 /// One lumped wall of the exhaust line (manifold, turbine housing, pipe, a chamber of the box).
 struct PipeSegmentParams {
   double length_m = 1.0;               ///< gas path length
-  double diameter_m = 0.1;             ///< hydraulic diameter of the gas path
+  double diameter_m = 0.1;             ///< hydraulic diameter of the gas path (Re, Nu)
+  double inner_area_m2 = 0.3;          ///< wetted area of the gas path (pipe: pi D L)
   double wall_mass_kg = 5.0;           ///< wall (and flanges, shields) at one temperature
   double wall_cp_J_kgK = 500.0;        ///< wall specific heat
   double outer_area_m2 = 0.3;          ///< outer surface losing heat to the surrounding air

@@ -43,7 +43,7 @@ double ExhaustLine::nusselt(int i, double mdot, double Tg) const {
 double ExhaustLine::gasSideHA(int i, double mdot, double Tg) const {
   const PipeSegmentParams& s = seg_[i];
   const double h = nusselt(i, mdot, Tg) * conductivity(Tg) / s.diameter_m;
-  return h * units::kPi * s.diameter_m * s.length_m;
+  return h * s.inner_area_m2;
 }
 
 double ExhaustLine::outerUA(int i, double T_wall, double T_amb, double v) const {

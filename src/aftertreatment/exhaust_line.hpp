@@ -4,7 +4,8 @@
 // ROS-free; no allocation after construction.
 //
 // Segment i: wall heat capacity C_i = m_i c_i [J/K], gas path of length L_i and hydraulic
-// diameter D_i, inner area A_i = pi D_i L_i, outer area A_out,i.
+// diameter D_i, wetted inner area A_i (pi D_i L_i for a pipe; a chamber's sheet and baffles),
+// outer area A_out,i.
 //   gas side:  Re = 4 mdot / (pi D mu(Tg)),  h = Nu k(Tg) / D  (gas properties at the temperature
 //              of the gas entering the segment, gas.hpp), Nu = max(Nu_lam, Nu_turb) with
 //              - upstream of the turbine (pulsating = true): Nu_turb = c_p Re^m_p, the

@@ -71,7 +71,8 @@ TEST(ExhaustLine, SteadyStateAndStepResponseMatchTheAnalyticPipe) {
   const double mdot = 0.15, cp = 1100.0, Tin = 700.0, Tamb = 290.0, T0 = 290.0;
   const double Re = 4.0 * mdot / (kPi * s.diameter_m * mu(Tin));
   const double Nu = 0.023 * std::pow(Re, 0.8) * std::pow(0.70, 0.3);
-  const double hA = Nu * kgas(Tin) / s.diameter_m * kPi * s.diameter_m * s.length_m;
+  const double hA = Nu * kgas(Tin) / s.diameter_m * s.inner_area_m2;
+  EXPECT_NEAR(s.inner_area_m2, kPi * s.diameter_m * s.length_m, 0.01 * s.inner_area_m2);  // a pipe
   const double G = mdot * cp * (1.0 - std::exp(-hA / (mdot * cp)));
   const double UA = h_nat * s.outer_area_m2;
   const double Tw = (G * Tin + UA * Tamb) / (G + UA);

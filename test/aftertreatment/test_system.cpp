@@ -164,7 +164,7 @@ TEST(Aftertreatment, LightOffFromTheThermalModel) {
     EXPECT_GT(ats.outputs().brick_T_K[kDOC], ats.outputs().brick_T_K[kSCR]);
   }
   // colder start: later light-off (the warm-up is dominated by the thermal front through the
-  // line's walls, DOC and DPF, so the difference is ~10 %: 365 s at 0 degC vs 323 s at 40 degC)
+  // line's walls, DOC and DPF, so the difference is ~15 %: 349 s at 0 degC vs 305 s at 40 degC)
   EXPECT_GT(t_lo[0], t_lo[1] + 2.0);
 }
 
