@@ -59,6 +59,13 @@ HeatTransferParams heatTransfer(const AtsParams& p) {
   return h;
 }
 
+namespace {
+std::unique_ptr<ExhaustLine> makeLine(const AtsParams& p, std::vector<std::string> names,
+                                      std::vector<PipeSegmentParams> segs) {
+  return std::make_unique<ExhaustLine>(std::move(names), std::move(segs), p.line, p.h_natural_W_m2K);
+}
+}  // namespace
+
 Aftertreatment::Aftertreatment(const AtsParams& p) : p_(p) {
   const HeatTransferParams h = heatTransfer(p);
   bricks_[kDOC] = std::make_unique<Brick>("DOC", p.doc, h, false);
@@ -69,13 +76,19 @@ Aftertreatment::Aftertreatment(const AtsParams& p) : p_(p) {
   dpf_.wall_permeability_m2 = p.dpf_wall_permeability_m2;
   dpf_.soot_permeability_m2 = p.dpf_soot_permeability_m2;
   dpf_.soot_cake_density_kg_m3 = p.dpf_soot_cake_density_kg_m3;
+  const LineParams& l = p.line;
+  line_[kLineUpstream] = makeLine(p, {"manifold", "turbine_housing", "downpipe", "rear_pipe", "box_inlet"},
+                                  {l.manifold, l.turbine_housing, l.downpipe, l.rear_pipe, l.box_inlet});
+  line_[kLineMixer] = makeLine(p, {"box_mixer"}, {l.box_mixer});
+  line_[kLineOutlet] = makeLine(p, {"box_outlet"}, {l.box_outlet});
+  filter_ = std::make_unique<SootFilter>(p.soot, p.dpf.slices, bricks_[kDPF]->sliceVolume());
   scr_ = std::make_unique<ScrStorage>(scrKinetics(p), p.scr.slices, bricks_[kSCR]->sliceVolume(),
                                       p.rtol, p.atol_theta, p.max_steps);
   int nmax = 0;
   for (const auto& b : bricks_) nmax = std::max(nmax, b->slices());
   qr_.assign(nmax, 0.0);
   heat_J_.assign(nmax, 0.0);
-  T_scr_.assign(nmax, 0.0);
+  T_wall_.assign(nmax, 0.0);
   reset(298.15);
 }
 
@@ -83,11 +96,17 @@ double Aftertreatment::energyStored() const {
   double e = 0.0;
   for (const auto& b : bricks_)
     for (int i = 0; i < b->slices(); ++i) e += b->sliceHeatCapacity() * b->T(i);
+  for (const auto& l : line_) e += l->energyStored();
   return e;
 }
 
 void Aftertreatment::reset(double T_K, double ambient_p_Pa) {
   for (auto& b : bricks_) b->setUniformTemperature(T_K);
+  for (auto& l : line_) l->setUniformTemperature(T_K);
+  filter_->setUniformLoad(p_.dpf_soot_load_g_L);
+  dpf_.soot_load_g_L = filter_->load_g_L();
+  soot_ = AtsSoot{};
+  soot0_kg_ = filter_->mass_kg();
   scr_->setCoverage(p_.scr_initial_coverage);
   p_brick_.fill(ambient_p_Pa);
   out_ = AtsOutputs{};
@@ -103,6 +122,10 @@ void Aftertreatment::reset(double T_K, double ambient_p_Pa) {
     out_.brick_out_T_K[b] = T_K;
   }
   out_.outlet_T_K = T_K;
+  out_.doc_inlet_T_K = T_K;
+  out_.scr_inlet_T_K = T_K;
+  out_.soot_mass_kg = soot0_kg_;
+  out_.soot_load_g_L = filter_->load_g_L();
   out_.back_pressure_Pa = ambient_p_Pa;
   out_.nh3_stored_mol = stored0_;
 }
@@ -136,6 +159,7 @@ PressureDrop Aftertreatment::brickPressureDrop(int b, double mdot, double T, dou
 void Aftertreatment::step(double dt, const AtsInputs& in) {
   checkStepInputs(dt, in);
   StepState s = beginStep(dt, in);
+  stepUpstreamLine(in, s);
   stepDoc(in, s);
   stepDpf(s);
   doseUrea(s);
@@ -172,7 +196,14 @@ Aftertreatment::StepState Aftertreatment::beginStep(double dt, const AtsInputs& 
   s.Tamb = in.ambient_T_K;
   s.v = in.vehicle_speed_m_s;
   s.x_O2 = in.comp.y_O2 * s.M / species::kO2_kg_mol;
+  s.co2_kg_s = in.comp.y_CO2 * s.mdot;
   return s;
+}
+
+// Exhaust line from the turbine outlet to the DOC face: the gas entering the DOC.
+void Aftertreatment::stepUpstreamLine(const AtsInputs& in, StepState& s) {
+  s.Tg_in[kDOC] = line_[kLineUpstream]->step(s.dt, s.mdot, s.cp, in.exhaust_T_K, s.Tamb, s.v,
+                                              s.e_line[kLineUpstream]);
 }
 
 // DOC: CO and HC oxidation and NO -> NO2 per slice at its wall temperature, then its thermal step.
@@ -210,20 +241,25 @@ void Aftertreatment::stepDoc(const AtsInputs& in, StepState& s) {
   }
   out_.doc_no2_fraction = s.n_NOx > 0.0 ? s.n_NO2 / s.n_NOx : 0.0;
   out_.doc_co_conversion = n_CO_in > 0.0 ? 1.0 - n_CO / n_CO_in : 0.0;
-  s.Tg_in[kDOC] = in.exhaust_T_K;
   s.Tg_out[kDOC] = doc.stepThermal(s.dt, s.mdot, s.cp, s.Tg_in[kDOC], qr_.data(), s.Tamb, s.v, s.e[kDOC]);
 }
 
-// DPF: thermal step only (constant soot load, no reaction).
+// DPF: soot deposition and NO2 oxidation at the wall temperatures of the step start (the NO2
+// consumed leaves as NO), its thermal step with the reaction heat, the soot load of the pressure
+// drop; then the mixer section of the box.
 void Aftertreatment::stepDpf(StepState& s) {
+  Brick& dpf = *bricks_[kDPF];
+  for (int i = 0; i < dpf.slices(); ++i) T_wall_[i] = dpf.T(i);
+  s.soot = filter_->step(s.dt, s.co2_kg_s, s.n_NO2, s.n_tot, p_brick_[kDPF], T_wall_.data(), qr_.data());
+  s.n_NO2 = s.soot.n_NO2_out_mol_s;
+  dpf_.soot_load_g_L = filter_->load_g_L();
   s.Tg_in[kDPF] = s.Tg_out[kDOC];
-  s.Tg_out[kDPF] =
-      bricks_[kDPF]->stepThermal(s.dt, s.mdot, s.cp, s.Tg_in[kDPF], nullptr, s.Tamb, s.v, s.e[kDPF]);
+  s.Tg_out[kDPF] = dpf.stepThermal(s.dt, s.mdot, s.cp, s.Tg_in[kDPF], qr_.data(), s.Tamb, s.v, s.e[kDPF]);
+  s.T_scr_in = line_[kLineMixer]->step(s.dt, s.mdot, s.cp, s.Tg_out[kDPF], s.Tamb, s.v, s.e_line[kLineMixer]);
 }
 
 // Urea dosing at the SCR inlet (storage controller) and the gas cooling by its evaporation.
 void Aftertreatment::doseUrea(StepState& s) {
-  s.T_scr_in = s.Tg_out[kDPF];
   out_.anr = 0.0;
   if (s.T_scr_in >= p_.dosing_release_T_K && s.n_NOx > 0.0 && s.mcp > 0.0) {
     const double target = storageTarget_mol();
@@ -248,8 +284,8 @@ void Aftertreatment::stepScr(StepState& s) {
   si.n_NH3_mol_s = s.n_NH3;
   si.n_total_mol_s = s.n_tot;
   si.p_Pa = p_brick_[kSCR];
-  for (int i = 0; i < scr.slices(); ++i) T_scr_[i] = scr.T(i);
-  s.scr = scr_->step(s.dt, si, T_scr_.data(), heat_J_.data());
+  for (int i = 0; i < scr.slices(); ++i) T_wall_[i] = scr.T(i);
+  s.scr = scr_->step(s.dt, si, T_wall_.data(), heat_J_.data());
   for (int i = 0; i < scr.slices(); ++i) qr_[i] = heat_J_[i] / s.dt;
   s.Tg_in[kSCR] = s.T_scr_in;
   s.Tg_out[kSCR] = scr.stepThermal(s.dt, s.mdot, s.cp, s.T_scr_in, qr_.data(), s.Tamb, s.v, s.e[kSCR]);
@@ -273,6 +309,7 @@ void Aftertreatment::stepAsc(StepState& s) {
   }
   s.Tg_in[kASC] = s.Tg_out[kSCR];
   s.Tg_out[kASC] = asc.stepThermal(s.dt, s.mdot, s.cp, s.Tg_in[kASC], qr_.data(), s.Tamb, s.v, s.e[kASC]);
+  s.T_tailpipe = line_[kLineOutlet]->step(s.dt, s.mdot, s.cp, s.Tg_out[kASC], s.Tamb, s.v, s.e_line[kLineOutlet]);
 }
 
 // Pressure from the tailpipe (ambient) upstream: muffler, then each brick at its mean gas
@@ -311,9 +348,11 @@ void Aftertreatment::accumulateBalances(const AtsInputs& in, const StepState& s)
     out_.brick_T_K[b] = bricks_[b]->meanT();
     out_.brick_out_T_K[b] = s.Tg_out[b];
   }
+  for (int l = 0; l < kNumLineParts; ++l) energy_.line_loss_J += s.e_line[l].can_loss_J;
   energy_.reaction_heat_J -= s.Q_adblue * dt;
   energy_.enthalpy_in_J += s.mcp * (in.exhaust_T_K - kT_ref_K) * dt;
-  energy_.enthalpy_out_J += s.mcp * (s.Tg_out[kASC] - kT_ref_K) * dt;
+  energy_.enthalpy_out_J += s.mcp * (s.T_tailpipe - kT_ref_K) * dt;
+  accumulateSoot(s);
   energy_.stored_change_J = energyStored() - E0_;
 
   n_.nh3_dosed_mol += s.n_NH3 * dt;
@@ -327,10 +366,28 @@ void Aftertreatment::accumulateBalances(const AtsInputs& in, const StepState& s)
   n_.nh3_stored_change_mol = scr_->storedMol() - stored0_;
 }
 
+// Cumulative soot counters and the NO2 reduced to NO on the soot.
+void Aftertreatment::accumulateSoot(const StepState& s) {
+  const SootStep& r = s.soot;
+  soot_.engine_out_kg += r.captured_kg + r.slip_kg;
+  soot_.captured_kg += r.captured_kg;
+  soot_.slip_kg += r.slip_kg;
+  soot_.burnt_kg += (r.carbon_co2_mol + r.carbon_co_mol) * kM_C;
+  soot_.carbon_co2_mol += r.carbon_co2_mol;
+  soot_.carbon_co_mol += r.carbon_co_mol;
+  soot_.no2_to_no_mol += r.no2_consumed_mol;
+  soot_.stored_change_kg = filter_->mass_kg() - soot0_kg_;
+}
+
 // Tailpipe flows, cumulative masses and the step's SCR conversion.
 void Aftertreatment::updateOutputs(const StepState& s) {
   const double dt = s.dt;
-  out_.outlet_T_K = s.Tg_out[kASC];
+  out_.outlet_T_K = s.T_tailpipe;
+  out_.doc_inlet_T_K = s.Tg_in[kDOC];
+  out_.scr_inlet_T_K = s.T_scr_in;
+  out_.scr_inlet_no2_fraction = s.n_NOx > 0.0 ? s.n_NO2 / s.n_NOx : 0.0;
+  out_.soot_mass_kg = filter_->mass_kg();
+  out_.soot_load_g_L = filter_->load_g_L();
   out_.tailpipe_nox_kg_s = s.nox_out_mol / dt * kM_NO2;
   out_.tailpipe_nox_kg += s.nox_out_mol * kM_NO2;
   out_.engine_nox_kg += s.nox_in_mol * kM_NO2;

@@ -21,6 +21,48 @@ void declareBrick(ParamSet& ps, const std::string& name, BrickParams& b) {
   ps.add("can_cp_J_kgK", b.can_cp_J_kgK, "J/(kg K)", 300.0, 2000.0, "can/mat specific heat");
   ps.add("slices", b.slices, "-", 5, 50, "axial slices");
 }
+void declareSegment(ParamSet& ps, const std::string& name, PipeSegmentParams& s) {
+  ps.setPrefix("line/" + name + "/");
+  ps.add("length_m", s.length_m, "m", 0.01, 10.0, "gas path length");
+  ps.add("diameter_m", s.diameter_m, "m", 0.01, 1.0, "hydraulic diameter of the gas path");
+  ps.add("inner_area_m2", s.inner_area_m2, "m^2", 0.001, 10.0, "wetted area of the gas path");
+  ps.add("wall_mass_kg", s.wall_mass_kg, "kg", 0.01, 200.0, "wall mass at one temperature");
+  ps.add("wall_cp_J_kgK", s.wall_cp_J_kgK, "J/(kg K)", 300.0, 2000.0, "wall specific heat");
+  ps.add("outer_area_m2", s.outer_area_m2, "m^2", 0.0, 10.0, "outer surface losing heat");
+  ps.add("insulation_thickness_m", s.insulation_thickness_m, "m", 0.0, 0.1, "wrap / air gap (0 = bare)");
+  ps.add("insulation_k_W_mK", s.insulation_k_W_mK, "W/(m K)", 0.01, 5.0, "wrap conductivity");
+  ps.add("emissivity", s.emissivity, "-", 0.0, 1.0, "outer surface emissivity");
+  ps.add("air_speed_factor", s.air_speed_factor, "-", 0.0, 1.5, "air speed at the surface / vehicle speed");
+  ps.add("pulsating", s.pulsating, "upstream of the turbine: pulsating-flow Nusselt law");
+}
+
+void declareLine(ParamSet& ps, LineParams& l) {
+  declareSegment(ps, "manifold", l.manifold);
+  declareSegment(ps, "turbine_housing", l.turbine_housing);
+  declareSegment(ps, "downpipe", l.downpipe);
+  declareSegment(ps, "rear_pipe", l.rear_pipe);
+  declareSegment(ps, "box_inlet", l.box_inlet);
+  declareSegment(ps, "box_mixer", l.box_mixer);
+  declareSegment(ps, "box_outlet", l.box_outlet);
+  ps.setPrefix("line/");
+  ps.add("laminar_nusselt", l.laminar_nusselt, "-", 1.0, 10.0, "laminar pipe flow (the lower bound)");
+  ps.add("pulsating_nusselt_c", l.pulsating_nusselt_c, "-", 0.0, 1.0, "Nu = c Re^m, pulsating flow");
+  ps.add("pulsating_nusselt_re_exponent", l.pulsating_nusselt_re_exponent, "-", 0.3, 1.0, "m");
+  ps.add("pipe_nusselt_c", l.pipe_nusselt_c, "-", 0.0, 1.0, "Nu = c Re^m Pr^n, steady pipe flow");
+  ps.add("pipe_nusselt_re_exponent", l.pipe_nusselt_re_exponent, "-", 0.3, 1.0, "m");
+  ps.add("pipe_nusselt_pr_exponent", l.pipe_nusselt_pr_exponent, "-", 0.0, 1.0, "n");
+}
+
+void declareSoot(ParamSet& ps, SootParams& s) {
+  ps.setPrefix("soot/");
+  ps.add("engine_out_g_per_kg_co2", s.engine_out_g_per_kg_co2, "g/kg", 0.0, 10.0, "engine-out soot per kg CO2");
+  ps.add("filtration_efficiency", s.filtration_efficiency, "-", 0.0, 1.0, "DPF mass filtration efficiency");
+  ps.add("no2_A_nm_cm3_K05_s", s.no2_A_nm_cm3_K05_s, "nm cm^3/(K^0.5 s)", 0.0, 1e-9,
+         "NO2 soot oxidation: diameter regression / (T^0.5 [NO2 molecules/cm^3])");
+  ps.add("no2_E_J_mol", s.no2_E_J_mol, "J/mol", 0.0, 3e5, "NO2 soot oxidation activation energy");
+  ps.add("primary_particle_diameter_m", s.primary_particle_diameter_m, "m", 1e-9, 1e-6, "soot primary particle");
+  ps.add("co2_selectivity", s.co2_selectivity, "-", 0.0, 1.0, "carbon to CO2 (C + 2 NO2); the rest to CO (C + NO2)");
+}
 }  // namespace
 
 void AtsParams::declare(ParamSet& ps) {
@@ -28,6 +70,8 @@ void AtsParams::declare(ParamSet& ps) {
   declareBrick(ps, "dpf", dpf);
   declareBrick(ps, "scr", scr);
   declareBrick(ps, "asc", asc);
+  declareLine(ps, line);
+  declareSoot(ps, soot);
 
   ps.setPrefix("heat/");
   ps.add("nusselt", nusselt, "-", 1.0, 10.0, "channel Nusselt number (laminar)");
@@ -52,7 +96,7 @@ void AtsParams::declare(ParamSet& ps) {
   ps.add("hc_heating_value_J_kg", hc_heating_value_J_kg, "J/kg", 1e7, 6e7, "HC lower heating value");
 
   ps.setPrefix("dpf_flow/");
-  ps.add("soot_load_g_L", dpf_soot_load_g_L, "g/L", 0.0, 10.0, "soot per litre of filter");
+  ps.add("soot_load_g_L", dpf_soot_load_g_L, "g/L", 0.0, 10.0, "soot per litre of filter at t = 0");
   ps.add("wall_permeability_m2", dpf_wall_permeability_m2, "m^2", 1e-15, 1e-10, "clean wall");
   ps.add("soot_permeability_m2", dpf_soot_permeability_m2, "m^2", 1e-17, 1e-11, "soot cake");
   ps.add("soot_cake_density_kg_m3", dpf_soot_cake_density_kg_m3, "kg/m^3", 20.0, 1000.0, "soot cake packing density");

@@ -23,8 +23,46 @@ struct BrickParams {
   int slices = 8;                    ///< axial slices (>= 5)
 };
 
+/// One lumped wall of the exhaust line (manifold, turbine housing, pipe, a chamber of the box).
+struct PipeSegmentParams {
+  double length_m = 1.0;               ///< gas path length
+  double diameter_m = 0.1;             ///< hydraulic diameter of the gas path (Re, Nu)
+  double inner_area_m2 = 0.3;          ///< wetted area of the gas path (pipe: pi D L)
+  double wall_mass_kg = 5.0;           ///< wall (and flanges, shields) at one temperature
+  double wall_cp_J_kgK = 500.0;        ///< wall specific heat
+  double outer_area_m2 = 0.3;          ///< outer surface losing heat to the surrounding air
+  double insulation_thickness_m = 0.0; ///< wrap / air gap on the outer surface (0 = bare)
+  double insulation_k_W_mK = 0.06;     ///< its conductivity
+  double emissivity = 0.8;             ///< outer surface (or the wrap's cover)
+  double air_speed_factor = 0.0;       ///< air speed at the outer surface / vehicle speed
+  bool pulsating = false;              ///< upstream of the turbine: the pulsating-flow Nusselt law
+};
+
+/// The exhaust line: walls upstream of the DOC, between DPF and SCR (mixer), after the ASC.
+struct LineParams {
+  PipeSegmentParams manifold, turbine_housing, downpipe, rear_pipe, box_inlet, box_mixer, box_outlet;
+  double laminar_nusselt = 3.66;       ///< fully developed laminar pipe flow, T_wall const
+  double pulsating_nusselt_c = 0.07;   ///< Nu = c Re^m upstream of the turbine
+  double pulsating_nusselt_re_exponent = 0.75;
+  double pipe_nusselt_c = 0.023;       ///< Nu = c Re^m Pr^n downstream of the turbine
+  double pipe_nusselt_re_exponent = 0.8;
+  double pipe_nusselt_pr_exponent = 0.3;
+};
+
+/// DPF soot: engine-out soot, filtration, NO2 oxidation (passive regeneration).
+struct SootParams {
+  double engine_out_g_per_kg_co2 = 0.03;     ///< engine-out soot per kg of exhaust CO2
+  double filtration_efficiency = 0.99;       ///< captured / entering the DPF (mass)
+  double no2_A_nm_cm3_K05_s = 2.4e-14;       ///< diameter regression rate / (T^0.5 [NO2])
+  double no2_E_J_mol = 47.1e3;               ///< its activation energy
+  double primary_particle_diameter_m = 25e-9;///< soot primary particle (specific surface)
+  double co2_selectivity = 1.0;              ///< carbon leaving as CO2 (C + 2 NO2), rest as CO
+};
+
 struct AtsParams {
   BrickParams doc, dpf, scr, asc;
+  LineParams line;
+  SootParams soot;
 
   // Heat transfer gas -> wall and can -> ambient.
   double nusselt = 2.98;                  ///< laminar fully developed, square channel, T_w const
@@ -33,7 +71,7 @@ struct AtsParams {
   double h_natural_W_m2K = 5.0;           ///< natural convection on the can at standstill
   double can_emissivity = 0.8;            ///< radiation from the can (linearised)
   double underbody_air_factor = 0.5;      ///< air speed at the can / vehicle speed
-  double can_length_factor = 1.3;         ///< can lateral area / substrate lateral area (cones)
+  double can_length_factor = 1.0;         ///< can lateral area / substrate lateral area
 
   // DOC kinetics: first-order, k = k_ref exp(-E/R (1/T - 1/T_ref)) [1/s per brick volume].
   double doc_co_k_ref_1_s = 10.0;
@@ -49,7 +87,7 @@ struct AtsParams {
   double hc_heating_value_J_kg = 43e6;    ///< lower heating value of the HC slip
 
   // DPF (wall flow).
-  double dpf_soot_load_g_L = 2.0;          ///< soot per litre of filter (constant, no regen.)
+  double dpf_soot_load_g_L = 2.0;          ///< soot per litre of filter at t = 0
   double dpf_wall_permeability_m2 = 5e-13; ///< clean wall
   double dpf_soot_permeability_m2 = 2e-14; ///< soot cake
   double dpf_soot_cake_density_kg_m3 = 100.0;

@@ -3,12 +3,12 @@
 #include <cmath>
 
 #include "aftertreatment/gas.hpp"
+#include "aftertreatment/lumped_wall.hpp"
 #include "common/errors.hpp"
 
 namespace hbt::aftertreatment {
 
 namespace {
-constexpr double kSigma = 5.670374e-8;  // Stefan-Boltzmann [W/(m^2 K^4)]
 // Outer film resistance [m^2 K/W] where no external heat transfer acts: the can loses ~nothing.
 constexpr double kNoFilmResistance_m2K_W = 1e12;
 }  // namespace
@@ -40,20 +40,9 @@ double Brick::meanT() const {
 }
 
 double Brick::externalH(double T_wall_K, double T_amb_K, double v) const {
-  const double Tm = 0.5 * (T_wall_K + T_amb_K);
-  const double h_rad = 4.0 * h_.can_emissivity * kSigma * Tm * Tm * Tm;
-  double h_forced = 0.0;
-  const double u = h_.underbody_air_factor * v;
-  if (u > 0.0) {
-    // Air film at the mean of can and ambient temperature (ambient pressure).
-    const double rho = kAtm_Pa / (species::kDryAirGas_J_kgK * Tm);
-    const double Dc = p_.diameter_m + 2.0 * h_.insulation_thickness_m;
-    const double Re = rho * u * Dc / viscosity(Tm);
-    const double Pr13 = std::cbrt(0.70);
-    const double Nu = Re < 4e4 ? 0.193 * std::pow(Re, 0.618) * Pr13 : 0.027 * std::pow(Re, 0.805) * Pr13;
-    h_forced = Nu * conductivity(Tm) / Dc;
-  }
-  return h_.h_natural_W_m2K + h_rad + h_forced;
+  return outerFilmH(T_wall_K, T_amb_K, h_.underbody_air_factor * v,
+                    p_.diameter_m + 2.0 * h_.insulation_thickness_m, h_.h_natural_W_m2K,
+                    h_.can_emissivity);
 }
 
 double Brick::canUA(double T_wall_K, double T_amb_K, double v) const {
@@ -74,21 +63,8 @@ double Brick::stepThermal(double dt, double mdot, double cp, double Tg, const do
     const double G = mcp > 0.0 ? -mcp * std::expm1(-sliceHA(Tg) / mcp) : 0.0;
     const double UA = canUA(T0, T_amb, v);
     const double Q = qr ? qr[i] : 0.0;
-    const double C = C_slice_;
-    const double a = G + UA;
-    double T1, Tbar;
-    if (a > 0.0) {
-      const double Teq = (G * Tg + Q + UA * T_amb) / a;
-      const double x = a * dt / C;
-      const double decay = std::exp(-x);
-      T1 = Teq + (T0 - Teq) * decay;
-      // mean over the step: Teq + (T0 - Teq) (1 - exp(-x)) / x
-      const double frac = x > 1e-8 ? -std::expm1(-x) / x : 1.0 - 0.5 * x;
-      Tbar = Teq + (T0 - Teq) * frac;
-    } else {
-      T1 = T0 + Q * dt / C;
-      Tbar = 0.5 * (T0 + T1);
-    }
+    const WallStep w = exactWallStep(T0, C_slice_, G, UA, Q, Tg, T_amb, dt);
+    const double T1 = w.T1, Tbar = w.Tbar, C = C_slice_;
     if (!std::isfinite(T1) || T1 <= 0.0)
       throw ModelDivergence("aftertreatment brick " + name_ + " slice " + std::to_string(i),
                             "wall temperature", "non-physical value " + std::to_string(T1));

@@ -24,7 +24,7 @@
 //         T_m = (T_i + T_amb)/2), h_forced from Hilpert's cylinder in cross flow,
 //         Nu_D = C Re^m Pr^(1/3) (C, m = 0.193, 0.618 for Re < 4e4; 0.027, 0.805 above;
 //         Incropera & DeWitt, "Fundamentals of Heat and Mass Transfer", table 7.2), air speed
-//         = underbody_air_factor * vehicle speed.
+//         = underbody_air_factor * vehicle speed (lumped_wall.hpp).
 // Over one step Tg_in, mdot, cp, Qr and h_ext are held constant and the linear wall ODE is
 // integrated exactly: T_i(t) = T_eq + (T_i0 - T_eq) exp(-lambda t), lambda = (G+UA)/C. The gas
 // outlet T is the step average Tg_out = Tg_in - G_i (Tg_in - Tbar_i) / (mdot cp), Tbar_i the
@@ -54,7 +54,7 @@ namespace hbt::aftertreatment {
 struct HeatTransferParams {
   double nusselt = 2.98, insulation_thickness_m = 0.008, insulation_k_W_mK = 0.12;
   double h_natural_W_m2K = 5.0, can_emissivity = 0.8, underbody_air_factor = 0.5;
-  double can_length_factor = 1.3;
+  double can_length_factor = 1.0;
 };
 
 struct DpfFlowParams {

@@ -100,6 +100,11 @@ def thermal_summary(data):
             s["scr_standstill_mean_c"] = scr[0] - 273.15
             s["scr_standstill_min_c"] = scr[1] - 273.15
         s["nh3_slip_g"] = float(ats["nh3_slip_mass_kg"][-1]) * 1000.0
+        if "dpf_soot_load_g_l" in ats:  # DPF soot and passive regeneration
+            s["dpf_soot_load_final_g_l"] = float(ats["dpf_soot_load_g_l"][-1])
+            s["soot_engine_out_g"] = float(ats["soot_engine_out_kg"][-1]) * 1000.0
+            s["soot_burnt_no2_g"] = float(ats["soot_burnt_kg"][-1]) * 1000.0
+            s["dpf_no2_to_no_mol"] = float(ats["dpf_no2_to_no_mol"][-1])
         s["adblue_kg"] = float(ats["urea_mass_kg"][-1])
         h_in = float(ats["enthalpy_in_j"][-1])
         if h_in > 0:

@@ -83,6 +83,28 @@ void AftertreatmentParticipant::step(const ros::Time& t, double dt_s) {
   model_->step(dt_s, inputs_.next(now, point, dt_s));
 }
 
+void AftertreatmentParticipant::publishLineAndSoot(hybrid_bus_twin::AftertreatmentState& s) const {
+  const AtsOutputs& o = model_->outputs();
+  const ExhaustLine& up = model_->line(kLineUpstream);  // manifold .. box_inlet, in flow order
+  s.manifold_temperature_k = up.T(0);
+  s.turbine_housing_temperature_k = up.T(1);
+  s.downpipe_temperature_k = up.T(2);
+  s.rear_pipe_temperature_k = up.T(3);
+  s.box_inlet_temperature_k = up.T(4);
+  s.box_mixer_temperature_k = model_->line(kLineMixer).T(0);
+  s.box_outlet_temperature_k = model_->line(kLineOutlet).T(0);
+  s.doc_inlet_temperature_k = o.doc_inlet_T_K;
+  s.scr_inlet_temperature_k = o.scr_inlet_T_K;
+  const AtsSoot& soot = model_->soot();
+  s.dpf_soot_mass_kg = o.soot_mass_kg;
+  s.dpf_soot_load_g_l = o.soot_load_g_L;
+  s.soot_engine_out_kg = soot.engine_out_kg;
+  s.soot_burnt_kg = soot.burnt_kg;
+  s.soot_balance_residual_kg = soot.residual_kg();
+  s.dpf_no2_to_no_mol = soot.no2_to_no_mol;
+  s.scr_inlet_no2_fraction = o.scr_inlet_no2_fraction;
+}
+
 void AftertreatmentParticipant::publishOutputs(const ros::Time& t) {
   const AtsOutputs& o = model_->outputs();
   const AtsEnergy& en = model_->energy();
@@ -123,6 +145,7 @@ void AftertreatmentParticipant::publishOutputs(const ros::Time& t) {
   s.enthalpy_in_j = en.enthalpy_in_J;
   s.enthalpy_out_j = en.enthalpy_out_J;
   s.can_loss_j = en.can_loss_J;
+  s.line_loss_j = en.line_loss_J;
   s.reaction_heat_j = en.reaction_heat_J;
   s.stored_energy_change_j = en.stored_change_J;
   s.energy_residual_j = en.residual_J();
@@ -130,6 +153,7 @@ void AftertreatmentParticipant::publishOutputs(const ros::Time& t) {
   s.nh3_reacted_mol = n.nh3_scr_reacted_mol;
   s.nh3_oxidised_mol = n.nh3_scr_oxidised_mol + n.nh3_asc_oxidised_mol;
   s.nh3_balance_residual_mol = n.residual_mol();
+  publishLineAndSoot(s);
   state_pub_.publish(boost::make_shared<hybrid_bus_twin::AftertreatmentState>(s));
 }
 

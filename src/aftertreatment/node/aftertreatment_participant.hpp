@@ -6,14 +6,14 @@
 //                        step), /vehicle/to_cooling (VehicleToCooling: distance for the mean
 //                        vehicle speed -- the can's forced convection --, ambient temperature).
 // Outputs (stamped t_k + P): /aftertreatment/state (AftertreatmentState: back-pressure at the
-//                        turbine outlet, brick temperatures, tailpipe NOx, NH3 slip, AdBlue,
-//                        light-off, energy and NH3 balances).
+//                        turbine outlet, brick and exhaust-line wall temperatures, tailpipe NOx,
+//                        NH3 slip, AdBlue, light-off, DPF soot, energy, NH3 and soot balances).
 // Parameters: private namespace = config/aftertreatment.yaml (AtsParams::declare; the macro step
 // P = cosim/macro_step_s, 0.1 s: a thermal node); /scenario/ambient_temperature_c,
 // /scenario/ambient_pressure_pa (tailpipe pressure).
-// Initial state: cold start -- every brick (substrate, washcoat, can) at the scenario ambient
-// temperature, the SCR store at scr_kinetics/initial_coverage (0 = empty), back-pressure =
-// ambient pressure.
+// Initial state: cold start -- every brick (substrate, washcoat, can) and every exhaust-line wall
+// at the scenario ambient temperature, the SCR store at scr_kinetics/initial_coverage (0 =
+// empty), the DPF at dpf_flow/soot_load_g_L, back-pressure = ambient pressure.
 // Time stepping: one model step per macro step P, fed the exact means of the 10 ms producers over
 // the last P from their cumulative totals (../step_inputs.hpp).
 // Diagnostics (docs/diagnostics.md): warning ats_below_light_off (the SCR not lit off --
@@ -21,6 +21,7 @@
 // without a break); key/values the CVODE steps of the SCR storage (in the window and in
 // all), brick temperatures, conversion.
 #pragma once
+#include <hybrid_bus_twin/AftertreatmentState.h>
 #include <hybrid_bus_twin/ExhaustState.h>
 #include <hybrid_bus_twin/VehicleToCooling.h>
 
@@ -46,6 +47,8 @@ class AftertreatmentParticipant : public cosim::Participant {
   void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
+  /// The exhaust-line wall temperatures and the DPF soot fields of the state message.
+  void publishLineAndSoot(hybrid_bus_twin::AftertreatmentState& s) const;
   std::unique_ptr<Aftertreatment> model_;
   AtsParams params_;
   AftertreatmentWarnings warnings_;  // diagnostics/ of config/aftertreatment.yaml
