@@ -65,15 +65,22 @@ BatteryModel::BatteryModel(const BatteryParams& p, const std::string& file)
 
 void BatteryModel::reset(double air_T_K) { reset(air_T_K, p_.pack.initial_soc); }
 
-void BatteryModel::reset(double air_T_K, double soc) {
-  if (!std::isfinite(air_T_K) || air_T_K < p_.numerics.min_temperature_K || air_T_K > p_.numerics.max_temperature_K)
-    throw ModelDivergence("battery", "initial temperature", "outside the numerics/ bounds or not finite");
+void BatteryModel::reset(double air_T_K, double soc) { resetState(air_T_K, air_T_K, soc); }
+
+void BatteryModel::resetWarm(double cells_T_K, double housing_T_K) {
+  resetState(cells_T_K, housing_T_K, p_.pack.initial_soc);
+}
+
+void BatteryModel::resetState(double cells_T_K, double housing_T_K, double soc) {
+  for (double T : {cells_T_K, housing_T_K})
+    if (!std::isfinite(T) || T < p_.numerics.min_temperature_K || T > p_.numerics.max_temperature_K)
+      throw ModelDivergence("battery", "initial temperature", "outside the numerics/ bounds or not finite");
   if (!(soc >= 0.0 && soc <= 1.0)) throw ModelDivergence("battery", "initial SOC", "outside [0, 1]");
   soc_ = soc;
   v1_ = 0.0;
-  T_ = T_init_ = air_T_K;
-  thermal_.reset(air_T_K);
-  fan_.reset(air_T_K);
+  T_ = cells_T_K;
+  thermal_.reset(cells_T_K, housing_T_K);
+  fan_.reset(cells_T_K);
   out_ = BatteryOutputs{};
   updateStateOutputs();
   out_.terminal_voltage_V = out_.ocv_V;  // at rest
@@ -115,7 +122,7 @@ void BatteryModel::updateStateOutputs() {
   out_.charge_current_limit_A = np * e.charge_cell_current_A;
   out_.housing_T_K = thermal_.housingT_K();
   out_.enclosure_air_T_K = thermal_.airT_K();
-  out_.stored_heat_change_J = thermal_.storedHeat_J(T_init_);
+  out_.stored_heat_change_J = thermal_.storedHeat_J();
   out_.energy_residual_J = out_.chemical_energy_J - out_.terminal_energy_J + out_.fan_energy_J -
                            out_.heat_to_air_J - out_.stored_heat_change_J - out_.rc_stored_energy_change_J;
 }

@@ -45,7 +45,7 @@
 //   RC store  ΔE_C = Σ Ns Np C1 (v1_1^2 - v1_0^2)/2        (C1 of that step)
 //   fan       W_f  = Σ P_f h                                (drawn through the terminals, part of W_t)
 //   heat to the ambient Q_a = Σ G_o ∫(T_w - T_amb) dt       (exact integral, pack_thermal.hpp)
-//   stored heat ΔH = C_c (T - T_initial) + C_w (T_w - T_initial)   (from the state)
+//   stored heat ΔH = C_c (T - T_0) + C_w (T_w - T_w,0)        (from the state; 0: at reset)
 //   residual = W_ch - W_t + W_f - Q_a - ΔH - ΔE_C            (0 to round-off)
 // (Electrically W_ch = W_t + W_0 + W_1 + ΔE_C exactly; thermally W_0 + W_1 + W_f = Q_a + ΔH.) ΔE_C is
 // the sum of the per-step changes: C1 changes between steps with (s, T), so it differs from
@@ -124,6 +124,8 @@ class BatteryModel {
   void reset(double air_T_K);
   /// Same with an explicit initial SOC.
   void reset(double air_T_K, double soc);
+  /// Cells at cells_T_K, housing at housing_T_K (a warm start), SOC = pack/initial_soc.
+  void resetWarm(double cells_T_K, double housing_T_K);
   /// Advances by dt_s with the inputs held. Throws ModelDivergence naming the quantity.
   void step(double dt_s, const BatteryInputs& in);
   const BatteryOutputs& outputs() const { return out_; }
@@ -138,6 +140,7 @@ class BatteryModel {
 
  private:
   void updateStateOutputs();
+  void resetState(double cells_T_K, double housing_T_K, double soc);
   BatteryParams p_;
   std::string file_;
   CellTable table_;
@@ -146,7 +149,7 @@ class BatteryModel {
   PackThermal thermal_;
   PackFan fan_;
   // State.
-  double soc_ = 0.5, v1_ = 0.0, T_ = 298.15, T_init_ = 298.15;
+  double soc_ = 0.5, v1_ = 0.0, T_ = 298.15;
   BatteryOutputs out_;
 };
 

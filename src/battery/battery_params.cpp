@@ -68,7 +68,9 @@ void BatteryParams::declare(ParamSet& ps) {
   ps.add("off_K", fan.off_K, "K", 250.0, 350.0, "fan off at and below this cell temperature");
   ps.setPrefix("warm_start/");
   ps.add("cell_above_ambient_K", thermal.warm_cell_above_ambient_K, "K", 0.0, 40.0,
-         "start:=warm: cells and housing above the ambient air");
+         "start:=warm: cells above the ambient air");
+  ps.add("housing_above_ambient_K", thermal.warm_housing_above_ambient_K, "K", 0.0, 40.0,
+         "start:=warm: housing above the ambient air");
 
   ps.setPrefix("numerics/");
   ps.add("min_temperature_K", numerics.min_temperature_K, "K", 100.0, 300.0, "divergence bound");

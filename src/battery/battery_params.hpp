@@ -68,7 +68,8 @@ struct EnclosureParams {
 
 /// Start state.
 struct ThermalParams {
-  double warm_cell_above_ambient_K = 5.0; // start:=warm: cells and housing this far above the ambient air
+  double warm_cell_above_ambient_K = 17.0;   // start:=warm: cells this far above the ambient air
+  double warm_housing_above_ambient_K = 10.0; // start:=warm: housing this far above the ambient air
 };
 
 struct NumericsParams {

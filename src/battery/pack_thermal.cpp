@@ -37,8 +37,9 @@ PackConductances PackThermal::conductances(bool fan_on, double v) const {
   return g;
 }
 
-void PackThermal::reset(double T_K) {
-  Tc_ = Tw_ = T_air_ = T_K;
+void PackThermal::reset(double cells_T_K, double housing_T_K) {
+  Tc_ = Tc0_ = cells_T_K;
+  Tw_ = Tw0_ = T_air_ = housing_T_K;
   Q_amb_step_ = Q_cw_step_ = 0.0;
 }
 

@@ -74,7 +74,9 @@ class PackThermal {
   /// Forced-convection coefficient of the housing's outer surface at air speed v [W/(m^2 K)].
   double forcedOutsideH(double v_air_m_s) const;
   /// Both masses at T_K.
-  void reset(double T_K);
+  void reset(double T_K) { reset(T_K, T_K); }
+  /// Cells at cells_T_K, housing (and air) at housing_T_K.
+  void reset(double cells_T_K, double housing_T_K);
   /// Advances by h with the cells' loss Q_cells_W, the fan heat Q_fan_W, ambient T_amb_K held.
   void step(double h, double Q_cells_W, double Q_fan_W, double T_amb_K, bool fan_on, double v_air_m_s);
   double cellsT_K() const { return Tc_; }
@@ -82,15 +84,16 @@ class PackThermal {
   double airT_K() const { return T_air_; }                 // enclosure air at the end of the step
   double heatToAmbient_J() const { return Q_amb_step_; }   // over the last step
   double cellsToWall_J() const { return Q_cw_step_; }      // over the last step (incl. radiation)
-  /// Heat stored since reset relative to T_ref_K in both masses [J].
-  double storedHeat_J(double T_ref_K) const {
-    return p_.cells_heat_capacity_J_K * (Tc_ - T_ref_K) + p_.housing_heat_capacity_J_K * (Tw_ - T_ref_K);
+  /// Heat stored in both masses since reset [J].
+  double storedHeat_J() const {
+    return p_.cells_heat_capacity_J_K * (Tc_ - Tc0_) + p_.housing_heat_capacity_J_K * (Tw_ - Tw0_);
   }
   const PackThermalParams& params() const { return p_; }
 
  private:
   PackThermalParams p_;
   double Tc_ = 298.15, Tw_ = 298.15, T_air_ = 298.15;
+  double Tc0_ = 298.15, Tw0_ = 298.15;  // at reset
   double Q_amb_step_ = 0.0, Q_cw_step_ = 0.0;
 };
 

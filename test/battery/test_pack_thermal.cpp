@@ -56,11 +56,12 @@ double handOverallAtRest(const BatteryParams& p, bool fan) {
 }  // namespace
 
 TEST(PackThermal, EnergyBalanceOfEveryStepToRoundOff) {
-  // Varying cell heat, fan heat, ambient, fan state and air speed: (Q_c + Q_f) h = ΔH + Q_amb.
+  // Varying cell heat, fan heat, ambient, fan state and air speed, from cells and housing at
+  // different temperatures: (Q_c + Q_f) h = ΔH + Q_amb.
   PackThermal net(shippedNetwork());
   const PackThermalParams& p = net.params();
   const double T0 = celsiusToK(5.0);
-  net.reset(T0);
+  net.reset(T0 + 3.0, T0);
   double in = 0.0, out = 0.0, scale = 0.0;
   const double h = 0.01;
   for (int k = 0; k < 300000; ++k) {  // 3000 s
@@ -75,7 +76,7 @@ TEST(PackThermal, EnergyBalanceOfEveryStepToRoundOff) {
     out += net.heatToAmbient_J();
     scale += std::abs(Qc + Qf) * h + std::abs(net.heatToAmbient_J());
   }
-  const double stored = net.storedHeat_J(T0);
+  const double stored = net.storedHeat_J();
   const double residual = in - out - stored;
   std::printf("3000 s varying duty: heat in %.6g J, to ambient %.6g J, stored %.6g J, residual %.2e J "
               "(rel %.1e), T_cells %.2f degC, T_housing %.2f degC, T_air %.2f degC\n",

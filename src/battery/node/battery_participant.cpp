@@ -20,7 +20,8 @@ void BatteryParticipant::configure() {
   ambient_T_K_ = cosim::scenarioAmbient_K(nh_);
   model_ = std::make_unique<BatteryModel>(p, configFile());
   if (cosim::scenarioWarmStart(nh_))  // mid-shift: cells above the air (warm_start/), SOC = pack/initial_soc
-    model_->reset(ambient_T_K_ + p.thermal.warm_cell_above_ambient_K);
+    model_->resetWarm(ambient_T_K_ + p.thermal.warm_cell_above_ambient_K,
+                      ambient_T_K_ + p.thermal.warm_housing_above_ambient_K);
   else
     model_->reset(ambient_T_K_);  // cold start: cells at ambient, SOC = pack/initial_soc
   emachine_ = &addInputFrom<hybrid_bus_twin::EMachineState>("emachine", "state");
