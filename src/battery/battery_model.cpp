@@ -34,6 +34,14 @@ PackThermalParams thermalParams(const BatteryParams& p) {
   t.air_conductivity_W_mK = e.air_conductivity_W_mK;
   t.air_viscosity_m2_s = e.air_viscosity_m2_s;
   t.air_prandtl = e.air_prandtl;
+  const VentilationParams& v = p.ventilation;
+  t.ventilation.fan_free_flow_m3_s = v.fan_free_flow_m3_s;
+  t.ventilation.fan_max_pressure_Pa = v.fan_max_pressure_Pa;
+  t.ventilation.fan_count = v.fan_count;
+  t.ventilation.linear_resistance_Pa_s_m3 = v.filter_resistance_Pa_s_m3 + p.housing.cell_gap_resistance_Pa_s_m3;
+  t.ventilation.quadratic_resistance_Pa_s2_m6 = v.minor_loss_Pa_s2_m6;
+  t.ventilation.air_pressure_Pa = v.air_pressure_Pa;
+  t.ventilation.air_cp_J_kgK = v.air_cp_J_kgK;
   return t;
 }
 }  // namespace
@@ -124,7 +132,8 @@ void BatteryModel::updateStateOutputs() {
   out_.enclosure_air_T_K = thermal_.airT_K();
   out_.stored_heat_change_J = thermal_.storedHeat_J();
   out_.energy_residual_J = out_.chemical_energy_J - out_.terminal_energy_J + out_.fan_energy_J -
-                           out_.heat_to_air_J - out_.stored_heat_change_J - out_.rc_stored_energy_change_J;
+                           out_.heat_to_air_J - out_.ventilation_heat_J - out_.stored_heat_change_J -
+                           out_.rc_stored_energy_change_J;
 }
 
 void BatteryModel::step(double h, const BatteryInputs& in) {
@@ -175,6 +184,7 @@ void BatteryModel::step(double h, const BatteryInputs& in) {
   const double Qdot = (W_0 + W_1) / h;
   thermal_.step(h, Qdot, P_fan, in.air_T_K, fan_on, in.air_speed_m_s);
   const double T_new = thermal_.cellsT_K(), Q_air = thermal_.heatToAmbient_J();
+  const double Q_vent = thermal_.ventilationHeat_J();
 
   // State update.
   soc_ -= i * h / Q_As_;
@@ -200,17 +210,21 @@ void BatteryModel::step(double h, const BatteryInputs& in) {
   out_.rc_loss_W = W_1 / h;
   out_.loss_power_W = Qdot;
   out_.heat_to_air_W = Q_air / h;
+  out_.ventilation_heat_W = Q_vent / h;
   out_.fan_on = fan_on;
   out_.fan_power_W = P_fan;
   out_.fan_energy_J += P_fan * h;
   if (fan_on) out_.fan_on_time_s += h;
-  out_.overall_conductance_W_K = thermal_.conductances(fan_on, in.air_speed_m_s).overall_W_K;
+  const PackConductances g = thermal_.conductances(fan_on, in.air_speed_m_s, in.air_T_K);
+  out_.overall_conductance_W_K = g.overall_W_K;
+  out_.ventilation_conductance_W_K = g.ventilation_W_K;
   out_.chemical_energy_J += W_ch;
   out_.terminal_energy_J += W_t;
   out_.ohmic_loss_J += W_0;
   out_.rc_loss_J += W_1;
   out_.loss_energy_J += W_0 + W_1;
   out_.heat_to_air_J += Q_air;
+  out_.ventilation_heat_J += Q_vent;
   out_.rc_stored_energy_change_J += dE_C;
   out_.unmet_energy_J += out_.unmet_power_W * h;
   out_.charge_throughput_Ah += std::abs(out_.current_A) * h / 3600.0;

@@ -1,6 +1,6 @@
 // 48 V Li-ion pack of the P1 mild hybrid: Ns cells in series x Np parallel strings of identical
-// cells, each a 1-RC equivalent circuit, in an enclosed housing with a thermostat-controlled
-// circulation fan (pack_thermal.hpp, pack_fan.hpp). ROS-free, deterministic, no allocation in step().
+// cells, each a 1-RC equivalent circuit, in a housing with thermostat-controlled ventilation fans
+// (pack_thermal.hpp, pack_ventilation.hpp, pack_fan.hpp). ROS-free, deterministic, no allocation in step().
 //
 // States: SOC s [-], RC voltage v1 of one cell [V], cell temperature T [K] (all cells alike),
 // housing temperature T_w [K], fan on/off.
@@ -11,7 +11,8 @@
 // Pack: V_t = Ns v_t [V], I = Np i [A], P = V_t I [W] (> 0 discharge).
 // Thermal: the cells' heat Qdot = Ns Np (i^2 R0 + v1^2/R1) [W] (ohmic + RC-resistor losses;
 //   reversible entropic heat not modelled) and the fan's electric power P_f enter the network
-//   cells (C_c = Ns Np m c_p) -> enclosure air -> housing wall (C_w) -> ambient of pack_thermal.hpp.
+//   cells (C_c = Ns Np m c_p) -> enclosure air -> housing wall (C_w) -> ambient of pack_thermal.hpp;
+//   with the fans on, ambient air is drawn through the enclosure (ventilation heat m_dot c_p (T_air - T_amb)).
 // Fan: on/off with hysteresis on T (pack_fan.hpp); P_f is added to the terminal power request
 //   (it is drawn from the pack like the e-machine and the DC/DC) and dissipated in the enclosure.
 //
@@ -45,9 +46,10 @@
 //   RC store  ΔE_C = Σ Ns Np C1 (v1_1^2 - v1_0^2)/2        (C1 of that step)
 //   fan       W_f  = Σ P_f h                                (drawn through the terminals, part of W_t)
 //   heat to the ambient Q_a = Σ G_o ∫(T_w - T_amb) dt       (exact integral, pack_thermal.hpp)
+//   ventilation heat   Q_v = Σ ∫ m_dot c_p (T_air - T_amb) dt  (exact integral, pack_thermal.hpp)
 //   stored heat ΔH = C_c (T - T_0) + C_w (T_w - T_w,0)        (from the state; 0: at reset)
-//   residual = W_ch - W_t + W_f - Q_a - ΔH - ΔE_C            (0 to round-off)
-// (Electrically W_ch = W_t + W_0 + W_1 + ΔE_C exactly; thermally W_0 + W_1 + W_f = Q_a + ΔH.) ΔE_C is
+//   residual = W_ch - W_t + W_f - Q_a - Q_v - ΔH - ΔE_C      (0 to round-off)
+// (Electrically W_ch = W_t + W_0 + W_1 + ΔE_C exactly; thermally W_0 + W_1 + W_f = Q_a + Q_v + ΔH.) ΔE_C is
 // the sum of the per-step changes: C1 changes between steps with (s, T), so it differs from
 // C1 v1^2/2 of the present state by that parameter drift (tiny).
 //
@@ -95,11 +97,13 @@ struct BatteryOutputs {
   double ohmic_loss_W = 0.0, rc_loss_W = 0.0;
   double loss_power_W = 0.0;             // ohmic + RC = heat generated in the cells [W]
   double heat_to_air_W = 0.0;            // housing -> ambient air [W]
-  bool fan_on = false;                   // circulation fan on over the last step
+  double ventilation_heat_W = 0.0;       // carried out by the ventilation air, G_v (T_air - T_amb) [W]
+  bool fan_on = false;                   // ventilation fans on over the last step
   double fan_power_W = 0.0;              // its electric power, part of request_W [W]
   double housing_T_K = 0.0;              // housing wall at the end of the step [K]
   double enclosure_air_T_K = 0.0;        // air inside the housing at the end of the step [K]
   double overall_conductance_W_K = 0.0;  // cells -> ambient, steady state, last step's fan and speed
+  double ventilation_conductance_W_K = 0.0;  // G_v = m_dot c_p of the ventilation air (0 fan off)
   // Limits for the next step (length limits/horizon_s) from the present state.
   double discharge_power_limit_W = 0.0, charge_power_limit_W = 0.0;      // >= 0
   double discharge_current_limit_A = 0.0, charge_current_limit_A = 0.0;  // pack, >= 0
@@ -107,6 +111,7 @@ struct BatteryOutputs {
   double chemical_energy_J = 0.0, terminal_energy_J = 0.0;
   double ohmic_loss_J = 0.0, rc_loss_J = 0.0, loss_energy_J = 0.0;
   double heat_to_air_J = 0.0, stored_heat_change_J = 0.0, rc_stored_energy_change_J = 0.0;
+  double ventilation_heat_J = 0.0;       // Σ heat carried out by the ventilation air
   double fan_energy_J = 0.0;             // Σ P_f h (the fan's share of terminal_energy_J)
   double fan_on_time_s = 0.0;
   double energy_residual_J = 0.0;

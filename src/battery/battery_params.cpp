@@ -15,6 +15,8 @@ void BatteryParams::declarePackSet(ParamSet& ps) {
   ps.add("area_m2", housing.area_m2, "m^2", 0.01, 20.0, "housing surface, inside = outside");
   ps.add("mass_kg", housing.mass_kg, "kg", 0.1, 500.0, "housing wall mass");
   ps.add("flow_length_m", housing.flow_length_m, "m", 0.05, 5.0, "housing length along the air flow");
+  ps.add("cell_gap_resistance_Pa_s_m3", housing.cell_gap_resistance_Pa_s_m3, "Pa s/m^3", 0.0, 1e5,
+         "ventilation: laminar pressure drop of the cell gaps per volume flow");
   ps.setPrefix("");
 }
 
@@ -66,6 +68,17 @@ void BatteryParams::declare(ParamSet& ps) {
   ps.add("rated_power_W", fan.rated_power_W, "W", 0.0, 2000.0, "fan electric power when on");
   ps.add("on_K", fan.on_K, "K", 250.0, 350.0, "fan on at and above this cell temperature");
   ps.add("off_K", fan.off_K, "K", 250.0, 350.0, "fan off at and below this cell temperature");
+  VentilationParams& v = ventilation;
+  ps.setPrefix("ventilation/");
+  ps.add("fan_free_flow_m3_s", v.fan_free_flow_m3_s, "m^3/s", 1e-4, 1.0, "one fan's free-air flow");
+  ps.add("fan_max_pressure_Pa", v.fan_max_pressure_Pa, "Pa", 1.0, 2000.0, "one fan's maximum static pressure");
+  ps.add("fan_count", v.fan_count, "-", 1, 20, "fans in parallel");
+  ps.add("filter_resistance_Pa_s_m3", v.filter_resistance_Pa_s_m3, "Pa s/m^3", 0.0, 1e5,
+         "inlet filter pressure drop per volume flow");
+  ps.add("minor_loss_Pa_s2_m6", v.minor_loss_Pa_s2_m6, "Pa s^2/m^6", 0.0, 1e7,
+         "entry and exit losses per volume flow squared");
+  ps.add("air_pressure_Pa", v.air_pressure_Pa, "Pa", 5e4, 1.2e5, "ambient air pressure (density)");
+  ps.add("air_cp_J_kgK", v.air_cp_J_kgK, "J/(kg K)", 900.0, 1100.0, "air specific heat");
   ps.setPrefix("warm_start/");
   ps.add("cell_above_ambient_K", thermal.warm_cell_above_ambient_K, "K", 0.0, 40.0,
          "start:=warm: cells above the ambient air");

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "battery/pack_fan.hpp"
+#include "battery/pack_ventilation.hpp"
 #include "common/params.hpp"
 #include "common/units.hpp"
 
@@ -51,6 +52,19 @@ struct HousingParams {
   double area_m2 = 1.08;                  // inner = outer surface of the housing [m^2]
   double mass_kg = 8.7;                   // housing wall [kg]
   double flow_length_m = 0.75;            // length along the air flow over the housing [m]
+  double cell_gap_resistance_Pa_s_m3 = 89.0;  // laminar flow through the cell gaps, dp/V [Pa s/m^3]
+};
+
+/// Ventilation through the housing with the fans on (pack_ventilation.hpp): fan curve, filter,
+/// minor losses, air. The linear resistance of the model = filter + housing/cell gaps.
+struct VentilationParams {
+  double fan_free_flow_m3_s = 0.0267;     // one fan, dp = 0 [m^3/s]
+  double fan_max_pressure_Pa = 38.8;      // one fan, V = 0 [Pa]
+  int fan_count = 2;                      // in parallel
+  double filter_resistance_Pa_s_m3 = 346.0;   // inlet filter, dp/V [Pa s/m^3]
+  double minor_loss_Pa_s2_m6 = 5.1e3;     // entry and exit losses, dp/V^2 [Pa s^2/m^6]
+  double air_pressure_Pa = 101325.0;      // ambient pressure [Pa]
+  double air_cp_J_kgK = 1007.0;           // air specific heat [J/(kg K)]
 };
 
 /// Heat transfer of the enclosure: cells -> enclosure air -> housing wall -> ambient (pack_thermal.hpp).
@@ -84,10 +98,11 @@ struct BatteryParams {
   HousingParams housing;
   EnclosureParams enclosure;
   PackFanParams fan;
+  VentilationParams ventilation;
   ThermalParams thermal;
   NumericsParams numerics;
   /// Registers every parameter as "<group>/<key>" (groups pack, housing, cell, limits,
-  /// enclosure, fan, warm_start, numerics) = config/battery.yaml.
+  /// enclosure, fan, ventilation, warm_start, numerics) = config/battery.yaml.
   void declare(ParamSet& ps);
   /// The pack set alone (groups pack/ and housing/): what a config/battery_pack/<name>.yaml holds.
   void declarePackSet(ParamSet& ps);

@@ -1,12 +1,12 @@
-// Thermostat of the pack's internal circulation fan: on/off with hysteresis on the cell temperature.
+// Thermostat of the pack's ventilation fans: on/off with hysteresis on the cell temperature.
 // ROS-free, deterministic.
 //
 //   on  when T_cell >= T_on,   off when T_cell <= T_off   (T_off < T_on; in between the state holds)
 //   P_fan = P_rated when on, else 0   [W], drawn from the 48 V bus through the pack's terminals
 //
-// On/off rather than proportional: the fan of a small low-voltage pack is switched at one speed by
-// the BMS, and no airflow/duty curve of a pack fan (h versus speed) was found to build a
-// proportional law on. The hysteresis band keeps the fan from chattering at the 0.01 s step.
+// On/off rather than proportional: the fans of a small low-voltage pack are switched at one speed
+// by the BMS; their flow is then the fixed operating point of pack_ventilation.hpp (a speed-
+// controlled law would need the fan curve at every duty and the cells' h versus flow, not sourced). The hysteresis band keeps the fan from chattering at the 0.01 s step.
 // The decision is taken on the cell temperature at the start of a step and held over it.
 #pragma once
 

@@ -20,40 +20,50 @@ double PackThermal::forcedOutsideH(double v) const {
   return Nu * p_.air_conductivity_W_mK / p_.flow_length_m;
 }
 
-PackConductances PackThermal::conductances(bool fan_on, double v) const {
+PackConductances PackThermal::conductances(bool fan_on, double v, double T_amb_K) const {
   PackConductances g;
   const double Tm3 = std::pow(p_.radiation_mean_temperature_K, 3);
   g.cells_to_air_W_K = (fan_on ? p_.h_cells_fan_W_m2K : p_.h_cells_natural_W_m2K) * p_.cells_area_m2;
   g.air_to_wall_W_K =
       (fan_on ? p_.h_wall_inside_fan_W_m2K : p_.h_wall_inside_natural_W_m2K) * p_.housing_area_m2;
+  g.ventilation_W_K = vent_.conductance_W_K(fan_on, T_amb_K);
   const double h_ri = 4.0 * kSigma * Tm3 / (1.0 / p_.emissivity_cells + 1.0 / p_.emissivity_housing - 1.0);
   g.radiation_in_W_K = h_ri * p_.housing_area_m2;
-  g.inner_W_K = 1.0 / (1.0 / g.cells_to_air_W_K + 1.0 / g.air_to_wall_W_K) + g.radiation_in_W_K;
+  // Star (air node) -> delta between cells, wall and ambient.
+  const double S = g.cells_to_air_W_K + g.air_to_wall_W_K + g.ventilation_W_K;
+  g.share_cells = g.cells_to_air_W_K / S;
+  g.share_wall = g.air_to_wall_W_K / S;
+  g.share_vent = g.ventilation_W_K / S;
+  g.inner_W_K = g.cells_to_air_W_K * g.share_wall + g.radiation_in_W_K;
+  g.cells_vent_W_K = g.cells_to_air_W_K * g.share_vent;
+  g.wall_vent_W_K = g.air_to_wall_W_K * g.share_vent;
   const double hf = forcedOutsideH(v), hn = p_.h_outside_natural_W_m2K;
   const double h_o = std::cbrt(hn * hn * hn + hf * hf * hf);
   const double h_ro = 4.0 * p_.emissivity_housing * kSigma * Tm3;
   g.outer_W_K = p_.housing_area_m2 * (h_o + h_ro);
-  g.overall_W_K = 1.0 / (1.0 / g.inner_W_K + 1.0 / g.outer_W_K);
+  const double gi = g.inner_W_K, go = g.outer_W_K + g.wall_vent_W_K;
+  g.overall_W_K = ((gi + g.cells_vent_W_K) * (gi + go) - gi * gi) / (gi + go);
   return g;
 }
 
 void PackThermal::reset(double cells_T_K, double housing_T_K) {
   Tc_ = Tc0_ = cells_T_K;
   Tw_ = Tw0_ = T_air_ = housing_T_K;
-  Q_amb_step_ = Q_cw_step_ = 0.0;
+  Q_amb_step_ = Q_vent_step_ = Q_cw_step_ = 0.0;
 }
 
 void PackThermal::step(double h, double Qc, double Qf, double Ta, bool fan_on, double v) {
-  const PackConductances g = conductances(fan_on, v);
-  const double gi = g.inner_W_K, go = g.outer_W_K;
-  const double a_c = g.cells_to_air_W_K / (g.cells_to_air_W_K + g.air_to_wall_W_K);
+  const PackConductances g = conductances(fan_on, v, Ta);
+  const double gi = g.inner_W_K, gcv = g.cells_vent_W_K, go = g.outer_W_K + g.wall_vent_W_K;
   const double Cc = p_.cells_heat_capacity_J_K, Cw = p_.housing_heat_capacity_J_K;
-  // Steady state of this step's inputs and the deviation from it.
-  const double Tw_inf = Ta + (Qc + Qf) / go;
-  const double Tc_inf = Tw_inf + (Qc + a_c * Qf) / gi;
+  // Steady state of this step's inputs (Cramer's rule) and the deviation from it.
+  const double qc = Qc + g.share_cells * Qf, qw = g.share_wall * Qf;
+  const double det = (gi + gcv) * (gi + go) - gi * gi;
+  const double u = (qc * (gi + go) + gi * qw) / det, w = (gi * qc + (gi + gcv) * qw) / det;
+  const double Tc_inf = Ta + u, Tw_inf = Ta + w;
   const double y0c = Tc_ - Tc_inf, y0w = Tw_ - Tw_inf;
   // A = [[a11, a12], [a21, a22]], eigenvalues l1 > l2 (both < 0).
-  const double a11 = -gi / Cc, a12 = gi / Cc, a21 = gi / Cw, a22 = -(gi + go) / Cw;
+  const double a11 = -(gi + gcv) / Cc, a12 = gi / Cc, a21 = gi / Cw, a22 = -(gi + go) / Cw;
   const double m = 0.5 * (a11 + a22);
   const double d = std::sqrt(0.25 * (a11 - a22) * (a11 - a22) + a12 * a21);
   const double l1 = m + d, l2 = m - d;
@@ -67,9 +77,12 @@ void PackThermal::step(double h, double Qc, double Qf, double Ta, bool fan_on, d
   const double jc = psi1 * y0c + psi12 * bc, jw = psi1 * y0w + psi12 * bw;  // J y0
   Tc_ = Tc_inf + yc;
   Tw_ = Tw_inf + yw;
-  Q_amb_step_ = go * ((Tw_inf - Ta) * h + jw);
-  Q_cw_step_ = gi * ((Tc_inf - Tw_inf) * h + jc - jw);
-  T_air_ = (g.cells_to_air_W_K * Tc_ + g.air_to_wall_W_K * Tw_ + Qf) / (g.cells_to_air_W_K + g.air_to_wall_W_K);
+  const double int_u = u * h + jc, int_w = w * h + jw;  // ∫(T_c - T_amb) dt, ∫(T_w - T_amb) dt
+  Q_amb_step_ = g.outer_W_K * int_w;
+  Q_vent_step_ = gcv * int_u + g.wall_vent_W_K * int_w + g.share_vent * Qf * h;
+  Q_cw_step_ = gi * (int_u - int_w);
+  const double S = g.cells_to_air_W_K + g.air_to_wall_W_K + g.ventilation_W_K;
+  T_air_ = (g.cells_to_air_W_K * Tc_ + g.air_to_wall_W_K * Tw_ + g.ventilation_W_K * Ta + Qf) / S;
 }
 
 }  // namespace hbt::battery

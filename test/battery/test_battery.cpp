@@ -302,7 +302,7 @@ TEST(BatteryModel, EnergyBalanceClosesOverMixedDutyWithLimits) {
   const BatteryOutputs& o = m.outputs();
   const double elec = o.chemical_energy_J - o.terminal_energy_J - o.ohmic_loss_J - o.rc_loss_J -
                       o.rc_stored_energy_change_J;
-  const double therm = o.loss_energy_J + o.fan_energy_J - o.heat_to_air_J - o.stored_heat_change_J;
+  const double therm = o.loss_energy_J + o.fan_energy_J - o.heat_to_air_J - o.ventilation_heat_J - o.stored_heat_change_J;
   std::printf("2000 s mixed duty at 0 degC: throughput %.4g J, losses %.4g J, residual %.2e J (rel %.1e), "
               "electrical %.2e J, thermal %.2e J, limited steps %d, T_end %.2f degC, SOC %.4f\n",
               throughput, o.loss_energy_J, o.energy_residual_J, o.energy_residual_J / throughput, elec, therm,
