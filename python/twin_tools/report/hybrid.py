@@ -5,8 +5,8 @@ Every key is left out when the node that owns it did not run.
 Summary keys: em_boost_kwh (crank work of the e-machine while motoring), em_brake_kwh (crank work
 it absorbed while generating, positive: regenerative braking + load-point shift), em_regen_kwh
 (the part absorbed while the EMS was in regen mode, booked per bag interval by the mode at the
-interval's end), em_loss_kwh, battery_loss_kwh, battery_heat_kwh, battery_fan_kwh (the pack's
-circulation fan, drawn from the 48 V bus), battery_fan_on_s, battery_housing_max_c, dcdc_kwh, soc_initial,
+interval's end), em_loss_kwh, battery_loss_kwh, battery_heat_kwh (through the housing), battery_vent_heat_kwh (carried
+out by the ventilation air), battery_fan_kwh (the pack's ventilation fans, drawn from the 48 V bus), battery_fan_on_s, battery_housing_max_c, dcdc_kwh, soc_initial,
 soc_final, soc_min and soc_max (the lowest and highest SOC of the run's bag samples), battery_max_c, winding_max_c, em_derating_s (time with the e-machine's live limits
 below its peak envelope), em_clamped_s (time the EMS asked beyond the e-machine's live limits and
 the e-machine clamped), battery_limited_s (time the battery's power request exceeded its limits), engine_off_s, engine_starts, cranking_s, warmup_inhibit_s,
@@ -69,6 +69,7 @@ def hybrid_summary(data, summary):
     s["em_loss_kwh"] = sum(_l(em, f) for f in loss_fields) / J_PER_KWH
     s["battery_loss_kwh"] = _l(bat, "loss_energy_j") / J_PER_KWH
     s["battery_heat_kwh"] = _l(bat, "heat_to_air_j") / J_PER_KWH
+    s["battery_vent_heat_kwh"] = _l(bat, "ventilation_heat_j") / J_PER_KWH
     s["soc_initial"] = float(bat["soc"][0])
     s["soc_final"] = _l(bat, "soc")
     s["soc_min"] = float(np.min(bat["soc"]))

@@ -10,7 +10,7 @@ Three balances, each from the cumulative energies the participants book themselv
   electric (hybrid):
            W_em,crank (e-machine's own crank work) + e-machine losses = E_dc (inverter DC energy)
            E_battery,terminal + unmet = E_dc + E_dcdc (24 V consumers through the DC/DC)
-                                        + E_fan (the pack's own circulation fan)
+                                        + E_fan (the pack's own ventilation fans)
            E_battery,chemical = E_battery,terminal + battery losses + RC stored energy
   driveline (vehicle_model.hpp):
            W_crank,engine + W_em = aux (steering, pneumatic, electric, HVAC, fan) + gearbox drag
@@ -196,7 +196,7 @@ def ledger_table(L):
                  ("e-machine + inverter + ratio-stage losses", "em_losses"),
                  ("e-machine DC energy (net, > 0 drawn)", "em_dc"),
                  ("24 V consumers via the DC/DC", "dcdc"),
-                 ("battery circulation fan (48 V)", "battery_fan"),
+                 ("battery ventilation fans (48 V)", "battery_fan"),
                  ("battery terminal energy (net, > 0 delivered)", "battery_terminal"),
                  ("battery losses (ohmic + polarisation)", "battery_losses"),
                  ("battery chemical energy (net, > 0 released)", "battery_chemical"),

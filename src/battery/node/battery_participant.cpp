@@ -94,6 +94,7 @@ void BatteryParticipant::publishOutputs(const ros::Time& t) {
   s.dcdc_power_w = dcdc_power_W_;
   s.heat_power_w = o.loss_power_W;
   s.heat_to_air_w = o.heat_to_air_W;
+  s.ventilation_heat_w = o.ventilation_heat_W;
   s.discharge_current_limit_a = o.discharge_current_limit_A;
   s.charge_current_limit_a = o.charge_current_limit_A;
   s.chemical_energy_j = o.chemical_energy_J;
@@ -102,6 +103,7 @@ void BatteryParticipant::publishOutputs(const ros::Time& t) {
   s.ohmic_loss_j = o.ohmic_loss_J;
   s.rc_loss_j = o.rc_loss_J;
   s.heat_to_air_j = o.heat_to_air_J;
+  s.ventilation_heat_j = o.ventilation_heat_J;
   s.stored_heat_change_j = o.stored_heat_change_J;
   s.rc_stored_energy_change_j = o.rc_stored_energy_change_J;
   s.energy_residual_j = o.energy_residual_J;
@@ -115,6 +117,7 @@ void BatteryParticipant::publishOutputs(const ros::Time& t) {
   s.fan_energy_j = o.fan_energy_J;
   s.fan_on_time_s = o.fan_on_time_s;
   s.thermal_conductance_w_k = o.overall_conductance_W_K;
+  s.ventilation_conductance_w_k = o.ventilation_conductance_W_K;
   state_pub_.publish(boost::make_shared<hybrid_bus_twin::BatteryState>(s));
 }
 

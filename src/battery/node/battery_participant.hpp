@@ -9,7 +9,7 @@
 //        step). In the same group (Jacobi) it would book the previous step's power instead.
 //        The terminal power request is electrical_power_w + the vehicle's DC/DC input for the
 //        24 V consumers (/vehicle/state dcdc_power_w, its auxiliary set; group 1, fresh) + the
-//        pack's own circulation fan (the model adds it). /vehicle/state speed_m_s = the air speed
+//        pack's own ventilation fans (the model adds them). /vehicle/state speed_m_s = the air speed
 //        over the (roof-mounted) housing.
 // Output (stamped t_k + P): /battery/state (BatteryState): terminal voltage, current, SOC, cell
 //        temperature, power limits for the next step, losses, cumulative energy bookkeeping.
