@@ -13,9 +13,41 @@ namespace {
 double clamp01(double x) { return std::min(1.0, std::max(0.0, x)); }
 /// 1 - e^{-x} without cancellation.
 double oneMinusExp(double x) { return -std::expm1(-x); }
+
+PackThermalParams thermalParams(const BatteryParams& p) {
+  const int n = p.pack.cells_in_series * p.pack.cells_in_parallel;
+  const EnclosureParams& e = p.enclosure;
+  PackThermalParams t;
+  t.cells_area_m2 = n * p.cell.cooled_area_m2;
+  t.cells_heat_capacity_J_K = n * p.cell.mass_kg * p.cell.cp_J_kgK;
+  t.housing_area_m2 = p.housing.area_m2;
+  t.housing_heat_capacity_J_K = p.housing.mass_kg * e.housing_cp_J_kgK;
+  t.h_cells_natural_W_m2K = e.h_cells_natural_W_m2K;
+  t.h_cells_fan_W_m2K = e.h_cells_fan_W_m2K;
+  t.h_wall_inside_natural_W_m2K = e.h_wall_inside_natural_W_m2K;
+  t.h_wall_inside_fan_W_m2K = e.h_wall_inside_fan_W_m2K;
+  t.h_outside_natural_W_m2K = e.h_outside_natural_W_m2K;
+  t.emissivity_cells = e.emissivity_cells;
+  t.emissivity_housing = e.emissivity_housing;
+  t.radiation_mean_temperature_K = e.radiation_mean_temperature_K;
+  t.flow_length_m = p.housing.flow_length_m;
+  t.air_conductivity_W_mK = e.air_conductivity_W_mK;
+  t.air_viscosity_m2_s = e.air_viscosity_m2_s;
+  t.air_prandtl = e.air_prandtl;
+  const VentilationParams& v = p.ventilation;
+  t.ventilation.fan_free_flow_m3_s = v.fan_free_flow_m3_s;
+  t.ventilation.fan_max_pressure_Pa = v.fan_max_pressure_Pa;
+  t.ventilation.fan_count = v.fan_count;
+  t.ventilation.linear_resistance_Pa_s_m3 = v.filter_resistance_Pa_s_m3 + p.housing.cell_gap_resistance_Pa_s_m3;
+  t.ventilation.quadratic_resistance_Pa_s2_m6 = v.minor_loss_Pa_s2_m6;
+  t.ventilation.air_pressure_Pa = v.air_pressure_Pa;
+  t.ventilation.air_cp_J_kgK = v.air_cp_J_kgK;
+  return t;
+}
 }  // namespace
 
-BatteryModel::BatteryModel(const BatteryParams& p, const std::string& file) : p_(p), file_(file) {
+BatteryModel::BatteryModel(const BatteryParams& p, const std::string& file)
+    : p_(p), file_(file), thermal_(thermalParams(p)), fan_(p.fan) {
   p_.validate(file);
   if (!std::ifstream(p_.cell.table_file).good())
     throw InputError(file, "cell/table_file", "cannot read '" + p_.cell.table_file + "'");
@@ -36,20 +68,27 @@ BatteryModel::BatteryModel(const BatteryParams& p, const std::string& file) : p_
   }
   n_cells_ = p_.pack.cells_in_series * p_.pack.cells_in_parallel;
   Q_As_ = p_.cell.capacity_Ah * 3600.0;
-  C_th_ = n_cells_ * p_.cell.mass_kg * p_.cell.cp_J_kgK + p_.thermal.extra_heat_capacity_J_K;
-  hA_ = p_.thermal.h_W_m2K * p_.cell.cooled_area_m2 * n_cells_;
   reset(units::celsiusToK(25.0));
 }
 
 void BatteryModel::reset(double air_T_K) { reset(air_T_K, p_.pack.initial_soc); }
 
-void BatteryModel::reset(double air_T_K, double soc) {
-  if (!std::isfinite(air_T_K) || air_T_K < p_.numerics.min_temperature_K || air_T_K > p_.numerics.max_temperature_K)
-    throw ModelDivergence("battery", "initial temperature", "outside the numerics/ bounds or not finite");
+void BatteryModel::reset(double air_T_K, double soc) { resetState(air_T_K, air_T_K, soc); }
+
+void BatteryModel::resetWarm(double cells_T_K, double housing_T_K) {
+  resetState(cells_T_K, housing_T_K, p_.pack.initial_soc);
+}
+
+void BatteryModel::resetState(double cells_T_K, double housing_T_K, double soc) {
+  for (double T : {cells_T_K, housing_T_K})
+    if (!std::isfinite(T) || T < p_.numerics.min_temperature_K || T > p_.numerics.max_temperature_K)
+      throw ModelDivergence("battery", "initial temperature", "outside the numerics/ bounds or not finite");
   if (!(soc >= 0.0 && soc <= 1.0)) throw ModelDivergence("battery", "initial SOC", "outside [0, 1]");
   soc_ = soc;
   v1_ = 0.0;
-  T_ = T_init_ = air_T_K;
+  T_ = cells_T_K;
+  thermal_.reset(cells_T_K, housing_T_K);
+  fan_.reset(cells_T_K);
   out_ = BatteryOutputs{};
   updateStateOutputs();
   out_.terminal_voltage_V = out_.ocv_V;  // at rest
@@ -89,9 +128,12 @@ void BatteryModel::updateStateOutputs() {
   out_.charge_power_limit_W = e.charge_power_W;
   out_.discharge_current_limit_A = np * e.discharge_cell_current_A;
   out_.charge_current_limit_A = np * e.charge_cell_current_A;
-  out_.stored_heat_change_J = C_th_ * (T_ - T_init_);
-  out_.energy_residual_J = out_.chemical_energy_J - out_.terminal_energy_J - out_.heat_to_air_J -
-                           out_.stored_heat_change_J - out_.rc_stored_energy_change_J;
+  out_.housing_T_K = thermal_.housingT_K();
+  out_.enclosure_air_T_K = thermal_.airT_K();
+  out_.stored_heat_change_J = thermal_.storedHeat_J();
+  out_.energy_residual_J = out_.chemical_energy_J - out_.terminal_energy_J + out_.fan_energy_J -
+                           out_.heat_to_air_J - out_.ventilation_heat_J - out_.stored_heat_change_J -
+                           out_.rc_stored_energy_change_J;
 }
 
 void BatteryModel::step(double h, const BatteryInputs& in) {
@@ -99,13 +141,16 @@ void BatteryModel::step(double h, const BatteryInputs& in) {
   if (!std::isfinite(in.power_request_W)) throw ModelDivergence("battery", "power request", "not finite");
   if (!std::isfinite(in.air_T_K) || in.air_T_K <= 0.0)
     throw ModelDivergence("battery", "air temperature", "not finite or <= 0 K");
+  if (!std::isfinite(in.air_speed_m_s)) throw ModelDivergence("battery", "air speed", "not finite");
   const double N = n_cells_;
+  const bool fan_on = fan_.update(T_);  // (0.) from the start-of-step cell temperature
+  const double P_fan = fan_.power_W();
   const CellPoint c = table_.at(soc_, T_);
   const StepEnvelope env = envelope(h);
   const double E = env.emf_V, R = env.r_eff_Ohm;
 
   // Cell current for the request (2.), or the limit current (3.).
-  const double P = in.power_request_W;
+  const double P = in.power_request_W + P_fan;
   double i;
   bool limited = false;
   if (P > env.discharge_power_W) {
@@ -135,19 +180,11 @@ void BatteryModel::step(double h, const BatteryInputs& in) {
   const double W_1 = N * int_v1sq / c.r1_Ohm;
   const double dE_C = N * 0.5 * C1 * (v1_new * v1_new - v1_ * v1_);
 
-  // Thermal, exact with the step-mean loss held (5.).
+  // Thermal network, exact with the step-mean loss and the fan heat held (5.).
   const double Qdot = (W_0 + W_1) / h;
-  double T_new, Q_air;
-  if (hA_ > 0.0) {
-    const double tau_th = C_th_ / hA_;
-    const double y = h / tau_th;
-    const double T_inf = in.air_T_K + Qdot / hA_;
-    T_new = T_inf + (T_ - T_inf) * std::exp(-y);
-    Q_air = hA_ * ((T_inf - in.air_T_K) * h + (T_ - T_inf) * tau_th * oneMinusExp(y));
-  } else {
-    T_new = T_ + Qdot * h / C_th_;
-    Q_air = 0.0;
-  }
+  thermal_.step(h, Qdot, P_fan, in.air_T_K, fan_on, in.air_speed_m_s);
+  const double T_new = thermal_.cellsT_K(), Q_air = thermal_.heatToAmbient_J();
+  const double Q_vent = thermal_.ventilationHeat_J();
 
   // State update.
   soc_ -= i * h / Q_As_;
@@ -173,12 +210,21 @@ void BatteryModel::step(double h, const BatteryInputs& in) {
   out_.rc_loss_W = W_1 / h;
   out_.loss_power_W = Qdot;
   out_.heat_to_air_W = Q_air / h;
+  out_.ventilation_heat_W = Q_vent / h;
+  out_.fan_on = fan_on;
+  out_.fan_power_W = P_fan;
+  out_.fan_energy_J += P_fan * h;
+  if (fan_on) out_.fan_on_time_s += h;
+  const PackConductances g = thermal_.conductances(fan_on, in.air_speed_m_s, in.air_T_K);
+  out_.overall_conductance_W_K = g.overall_W_K;
+  out_.ventilation_conductance_W_K = g.ventilation_W_K;
   out_.chemical_energy_J += W_ch;
   out_.terminal_energy_J += W_t;
   out_.ohmic_loss_J += W_0;
   out_.rc_loss_J += W_1;
   out_.loss_energy_J += W_0 + W_1;
   out_.heat_to_air_J += Q_air;
+  out_.ventilation_heat_J += Q_vent;
   out_.rc_stored_energy_change_J += dE_C;
   out_.unmet_energy_J += out_.unmet_power_W * h;
   out_.charge_throughput_Ah += std::abs(out_.current_A) * h / 3600.0;

@@ -1,9 +1,12 @@
-// Parameters of the 48 V Li-ion pack (cells, pack layout, operating limits, air cooling). SI
+// Parameters of the 48 V Li-ion pack (cells, pack layout, operating limits, enclosure and fan). SI
 // units. Keys (group/key) = config/battery.yaml, where every value, its source and the sizing of
-// the pack are documented.
+// the pack are documented. The pack set (groups pack/ and housing/) can be replaced by a file
+// config/battery_pack/<name>.yaml (launch argument pack, declarePackSet()).
 #pragma once
 #include <string>
 
+#include "battery/pack_fan.hpp"
+#include "battery/pack_ventilation.hpp"
 #include "common/params.hpp"
 #include "common/units.hpp"
 
@@ -44,11 +47,43 @@ struct LimitParams {
   double horizon_s = 0.01;                // step length the published limits are computed for
 };
 
-/// Lumped air-cooled thermal model.
+/// The housing of this pack size (pack set, with pack/).
+struct HousingParams {
+  double area_m2 = 1.08;                  // inner = outer surface of the housing [m^2]
+  double mass_kg = 8.7;                   // housing wall [kg]
+  double flow_length_m = 0.75;            // length along the air flow over the housing [m]
+  double cell_gap_resistance_Pa_s_m3 = 89.0;  // laminar flow through the cell gaps, dp/V [Pa s/m^3]
+};
+
+/// Ventilation through the housing with the fans on (pack_ventilation.hpp): fan curve, filter,
+/// minor losses, air. The linear resistance of the model = filter + housing/cell gaps.
+struct VentilationParams {
+  double fan_free_flow_m3_s = 0.0267;     // one fan, dp = 0 [m^3/s]
+  double fan_max_pressure_Pa = 38.8;      // one fan, V = 0 [Pa]
+  int fan_count = 2;                      // in parallel
+  double filter_resistance_Pa_s_m3 = 346.0;   // inlet filter, dp/V [Pa s/m^3]
+  double minor_loss_Pa_s2_m6 = 5.1e3;     // entry and exit losses, dp/V^2 [Pa s^2/m^6]
+  double air_pressure_Pa = 101325.0;      // ambient pressure [Pa]
+  double air_cp_J_kgK = 1007.0;           // air specific heat [J/(kg K)]
+};
+
+/// Heat transfer of the enclosure: cells -> enclosure air -> housing wall -> ambient (pack_thermal.hpp).
+struct EnclosureParams {
+  double housing_cp_J_kgK = 903.0;        // housing material specific heat [J/(kg K)]
+  double h_cells_natural_W_m2K = 4.0;     // cell faces -> enclosure air, fan off
+  double h_cells_fan_W_m2K = 20.0;        // same, fan on
+  double h_wall_inside_natural_W_m2K = 4.0;
+  double h_wall_inside_fan_W_m2K = 20.0;
+  double h_outside_natural_W_m2K = 4.0;   // housing -> ambient air, free convection
+  double emissivity_cells = 0.9, emissivity_housing = 0.9;
+  double radiation_mean_temperature_K = 300.0;
+  double air_conductivity_W_mK = 0.0263, air_viscosity_m2_s = 15.89e-6, air_prandtl = 0.707;
+};
+
+/// Start state.
 struct ThermalParams {
-  double h_W_m2K = 15.0;                  // cell surface -> cooling air
-  double extra_heat_capacity_J_K = 0.0;   // housing, busbars, frames lumped with the cells
-  double warm_cell_above_ambient_K = 5.0; // start:=warm: cells this far above the ambient air
+  double warm_cell_above_ambient_K = 17.0;   // start:=warm: cells this far above the ambient air
+  double warm_housing_above_ambient_K = 10.0; // start:=warm: housing this far above the ambient air
 };
 
 struct NumericsParams {
@@ -60,11 +95,17 @@ struct BatteryParams {
   PackParams pack;
   CellParams cell;
   LimitParams limits;
+  HousingParams housing;
+  EnclosureParams enclosure;
+  PackFanParams fan;
+  VentilationParams ventilation;
   ThermalParams thermal;
   NumericsParams numerics;
-  /// Registers every parameter as "<group>/<key>" (groups pack, cell, limits, thermal,
-  /// numerics) = config/battery.yaml.
+  /// Registers every parameter as "<group>/<key>" (groups pack, housing, cell, limits,
+  /// enclosure, fan, ventilation, warm_start, numerics) = config/battery.yaml.
   void declare(ParamSet& ps);
+  /// The pack set alone (groups pack/ and housing/): what a config/battery_pack/<name>.yaml holds.
+  void declarePackSet(ParamSet& ps);
   /// Cross-field checks (48 V class, voltage window, SOC window, derating temperatures). Throws
   /// InputError(file, key). The table-dependent checks are in BatteryModel's constructor.
   void validate(const std::string& file = "(battery parameters)") const;

@@ -103,6 +103,8 @@ std::vector<ShippedFile> shippedFiles() {
       {"config/aux/fan_only.yaml", declared<vehicle::AuxParams>("aux/"), {}},
       {"config/gearbox/typical.yaml", declared<vehicle::GearLossSetParams>("gearbox/"), {}},
       {"config/gearbox/vecto_standard.yaml", declared<vehicle::GearLossSetParams>("gearbox/"), {}},
+      {"config/battery_pack/production_13s2p.yaml",
+       [](ParamSet& ps) { static battery::BatteryParams b; b.declarePackSet(ps); }, {}},
       {"config/engine_1d.yaml",
        withWarnings<engine_1d::Engine1DConfig, engine::EngineWarnings>(
            [](engine::EngineWarnings& w, ParamSet& ps) { w.declare(ps, "1d"); }),

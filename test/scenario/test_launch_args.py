@@ -67,6 +67,7 @@ class LaunchArgs(unittest.TestCase):
     def test_missing_files(self):
         self.rejected("aux:=foo", "fan_only", "vecto_p1_example")
         self.rejected("gearbox:=measured", "argument 'gearbox'", "typical", "vecto_standard")
+        self.rejected("pack:=13s9p", "argument 'pack'", "production_13s2p")
         self.rejected("cycle:=Nowhere", "Urban")
         self.rejected("cycle_file:=/nonexistent.vdri", "not found")
         self.rejected("config:=/nonexistent_dir", "not found")
@@ -137,7 +138,7 @@ class LaunchArgs(unittest.TestCase):
 
     def test_valid_arguments_pass_unchanged(self):
         args = ["ambient:=0", "engine:=1d", "solver:=tvd", "mode:=nodelets", "aux:=fan_only",
-                "gearbox:=vecto_standard", "cycle:=Urban", "rviz:=false", "hvac:=off"]
+                "gearbox:=vecto_standard", "pack:=production_13s2p", "cycle:=Urban", "rviz:=false", "hvac:=off"]
         rc, out, _ = check(*args)
         self.assertEqual(rc, 0)
         self.assertEqual(out, ["ambient:=0.0"] + args[1:])

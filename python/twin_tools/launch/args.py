@@ -69,6 +69,7 @@ ARGS = {
     "rviz": choice("true", "false"),
     "aux": existing("file", "{config}/aux", ".yaml"),
     "gearbox": existing("file", "{config}/gearbox", ".yaml"),  # gear loss set
+    "pack": existing("file", "{config}/battery_pack", ".yaml"),  # 48 V pack set (empty: battery.yaml's)
     "cycle": existing("file", "config/data/cycles/vecto", ".vdri"),
     "cycle_file": existing("file"),
     "config": existing("dir"),
@@ -153,10 +154,10 @@ def check_architecture(scenario, given):
 
 
 def check_yaml_files(folder):
-    """Every YAML of the config folder (and its aux/ and gearbox/ sets) parses and is not empty, before
+    """Every YAML of the config folder (and its aux/, gearbox/ and battery_pack/ sets) parses and is not empty, before
     roslaunch reads them (its errors name no file; an empty file loads nothing, silently)."""
     import yaml
-    for sub in ("", "aux", "gearbox"):
+    for sub in ("", "aux", "gearbox", "battery_pack"):
         d = os.path.join(folder, sub)
         if not os.path.isdir(d):
             continue

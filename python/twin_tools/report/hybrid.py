@@ -5,11 +5,12 @@ Every key is left out when the node that owns it did not run.
 Summary keys: em_boost_kwh (crank work of the e-machine while motoring), em_brake_kwh (crank work
 it absorbed while generating, positive: regenerative braking + load-point shift), em_regen_kwh
 (the part absorbed while the EMS was in regen mode, booked per bag interval by the mode at the
-interval's end), em_loss_kwh, battery_loss_kwh, battery_heat_kwh, dcdc_kwh, soc_initial,
+interval's end), em_loss_kwh, battery_loss_kwh, battery_heat_kwh (through the housing), battery_vent_heat_kwh (carried
+out by the ventilation air), battery_fan_kwh (the pack's ventilation fans, drawn from the 48 V bus), battery_fan_on_s, battery_housing_max_c, dcdc_kwh, soc_initial,
 soc_final, soc_min and soc_max (the lowest and highest SOC of the run's bag samples), battery_max_c, winding_max_c, em_derating_s (time with the e-machine's live limits
 below its peak envelope), em_clamped_s (time the EMS asked beyond the e-machine's live limits and
 the e-machine clamped), battery_limited_s (time the battery's power request exceeded its limits), engine_off_s, engine_starts, cranking_s, warmup_inhibit_s,
-electric_path_closure (|battery terminal energy - e-machine DC energy - DC/DC energy - unmet| /
+electric_path_closure (|battery terminal energy + unmet - e-machine DC energy - DC/DC energy - fan| /
 throughput), battery_balance_closure, em_balance_closure, fuel_soc_corrected_kg and, given a
 baseline summary (scripts/twin report --baseline), fuel_saving_pct.
 
@@ -68,11 +69,15 @@ def hybrid_summary(data, summary):
     s["em_loss_kwh"] = sum(_l(em, f) for f in loss_fields) / J_PER_KWH
     s["battery_loss_kwh"] = _l(bat, "loss_energy_j") / J_PER_KWH
     s["battery_heat_kwh"] = _l(bat, "heat_to_air_j") / J_PER_KWH
+    s["battery_vent_heat_kwh"] = _l(bat, "ventilation_heat_j") / J_PER_KWH
     s["soc_initial"] = float(bat["soc"][0])
     s["soc_final"] = _l(bat, "soc")
     s["soc_min"] = float(np.min(bat["soc"]))
     s["soc_max"] = float(np.max(bat["soc"]))
     s["battery_max_c"] = float(np.max(bat["cell_temperature_k"])) - 273.15
+    s["battery_fan_kwh"] = _l(bat, "fan_energy_j") / J_PER_KWH
+    s["battery_fan_on_s"] = _l(bat, "fan_on_time_s")
+    s["battery_housing_max_c"] = float(np.max(bat["housing_temperature_k"])) - 273.15
     s["winding_max_c"] = float(np.max(em["winding_temperature_k"])) - 273.15
     der = em["derating_factor"] < 1.0 - 1e-9
     dt = np.diff(em["t"])
@@ -95,10 +100,10 @@ def hybrid_summary(data, summary):
     # balances
     term, dc = _l(bat, "terminal_energy_j"), _l(em, "electrical_energy_j")
     dcdc = _l(veh, "dcdc_energy_j") if veh is not None and "dcdc_energy_j" in veh else 0.0
-    unmet = _l(bat, "unmet_energy_j")
-    throughput = _l(em, "electrical_drawn_energy_j") - _l(em, "electrical_returned_energy_j") + abs(dcdc)
+    unmet, fan = _l(bat, "unmet_energy_j"), _l(bat, "fan_energy_j")
+    throughput = _l(em, "electrical_drawn_energy_j") - _l(em, "electrical_returned_energy_j") + abs(dcdc) + fan
     if throughput > 0:
-        s["electric_path_closure"] = abs(term + unmet - dc - dcdc) / throughput
+        s["electric_path_closure"] = abs(term + unmet - dc - dcdc - fan) / throughput
         s["battery_balance_closure"] = abs(_l(bat, "energy_residual_j")) / throughput
         s["em_balance_closure"] = abs(_l(em, "energy_residual_j")) / throughput
     # SOC-corrected fuel
@@ -194,9 +199,12 @@ def hybrid_plots(data, save, plt):
     ax[0].legend(fontsize=8)
     ax[1].plot(bat["t"], bat["soc"] * 100.0, lw=0.8)
     ax[1].set(ylabel="SOC [%]")
-    ax[2].plot(bat["t"], bat["cell_temperature_k"] - 273.15, lw=0.8)
+    ax[2].plot(bat["t"], bat["cell_temperature_k"] - 273.15, lw=0.8, label="cells")
+    if "housing_temperature_k" in bat:
+        ax[2].plot(bat["t"], bat["housing_temperature_k"] - 273.15, lw=0.8, label="housing")
+        ax[2].legend(fontsize=8)
     ax[2].axhline(45.0, color="r", lw=0.5, ls="--")
-    ax[2].set(ylabel="cell T [°C]")
+    ax[2].set(ylabel="battery T [°C]")
     ax[3].plot(bat["t"], bat["current_a"], lw=0.4)
     ax[3].set(xlabel="time [s]", ylabel="current [A] (>0 disch.)")
     save(fig, "hybrid.png")

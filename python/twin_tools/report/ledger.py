@@ -10,6 +10,7 @@ Three balances, each from the cumulative energies the participants book themselv
   electric (hybrid):
            W_em,crank (e-machine's own crank work) + e-machine losses = E_dc (inverter DC energy)
            E_battery,terminal + unmet = E_dc + E_dcdc (24 V consumers through the DC/DC)
+                                        + E_fan (the pack's own ventilation fans)
            E_battery,chemical = E_battery,terminal + battery losses + RC stored energy
   driveline (vehicle_model.hpp):
            W_crank,engine + W_em = aux (steering, pneumatic, electric, HVAC, fan) + gearbox drag
@@ -123,7 +124,9 @@ def energy_ledger(data):
         L["battery_unmet"] = _last(bat, "unmet_energy_j")
         L["battery_losses"] = _last(bat, "loss_energy_j")
         L["battery_chemical"] = _last(bat, "chemical_energy_j")
-        L["electric_residual"] = L["battery_terminal"] + L["battery_unmet"] - L["em_dc"] - L["dcdc"]
+        L["battery_fan"] = _last(bat, "fan_energy_j")  # drawn through the terminals, heat in the pack
+        L["electric_residual"] = (L["battery_terminal"] + L["battery_unmet"] - L["em_dc"] - L["dcdc"]
+                                  - L["battery_fan"])
     cool = data.get(COOLING_STATE)
     if cool is not None and "electric_pump_energy_j" in cool:  # 24 V: in aux_hvac or the DC/DC
         L["heater_pump"] = _last(cool, "electric_pump_energy_j")
@@ -198,10 +201,11 @@ def ledger_table(L):
                  ("e-machine + inverter + ratio-stage losses", "em_losses"),
                  ("e-machine DC energy (net, > 0 drawn)", "em_dc"),
                  ("24 V consumers via the DC/DC", "dcdc"),
+                 ("battery ventilation fans (48 V)", "battery_fan"),
                  ("battery terminal energy (net, > 0 delivered)", "battery_terminal"),
                  ("battery losses (ohmic + polarisation)", "battery_losses"),
                  ("battery chemical energy (net, > 0 released)", "battery_chemical"),
-                 ("residual of the electric path (terminal - DC - DC/DC)", "electric_residual")]
+                 ("residual of the electric path (terminal - DC - DC/DC - fan)", "electric_residual")]
     if "heater_pump" in L:
         rows += [("heater circulation pump, 24 V electric (engine stopped; in aux_hvac via the "
                   "alternator, or in the DC/DC)", "heater_pump")]

@@ -161,6 +161,8 @@ def summarise(scenario, args, status, data, stops_csv, sv=ledger.STOP_SERVICE_DE
         "sim_time_s": status["sim_time_s"],
         "wall_time_s": status["wall_time_s"],
     }
+    if arch == "p1_48v":  # the 48 V pack set: config/battery_pack/<pack>.yaml, empty = battery.yaml's own
+        s["battery_pack"] = args.get("pack") or "battery.yaml"
     if veh is None or eng is None:
         return s
     dist_m = veh["distance_m"][-1]

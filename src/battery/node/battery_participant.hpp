@@ -8,14 +8,18 @@
 //        e-machine's own step [t_k, t_k + P], and books exactly that energy (V_t I = P over the
 //        step). In the same group (Jacobi) it would book the previous step's power instead.
 //        The terminal power request is electrical_power_w + the vehicle's DC/DC input for the
-//        24 V consumers (/vehicle/state dcdc_power_w, its auxiliary set; group 1, fresh).
+//        24 V consumers (/vehicle/state dcdc_power_w, its auxiliary set; group 1, fresh) + the
+//        pack's own ventilation fans (the model adds them). /vehicle/state speed_m_s = the air speed
+//        over the (roof-mounted) housing.
 // Output (stamped t_k + P): /battery/state (BatteryState): terminal voltage, current, SOC, cell
 //        temperature, power limits for the next step, losses, cumulative energy bookkeeping.
 //        A request beyond the power limits is delivered at the limit (request_limited,
 //        unmet_power_w); the EMS is expected to respect discharge/charge_power_limit_w.
 // Parameters: private namespace = config/battery.yaml (cell/table_file resolved against the
-// package root, cosim::resolvePackagePath); /scenario/ambient_temperature_c = the air around the
-// pack, constant (initial state: cells at ambient, cold start; SOC = pack/initial_soc).
+// package root, cosim::resolvePackagePath); /scenario/battery_pack (launch argument pack): a file
+// config/battery_pack/<name>.yaml replacing the groups pack/ and housing/;
+// /scenario/ambient_temperature_c = the air around the housing, constant (initial state: cells
+// and housing at ambient, cold start; SOC = pack/initial_soc).
 // Diagnostics (docs/diagnostics.md): warning battery_limited (request_limited for
 // diagnostics/duration_s of config/battery.yaml); key/values SOC, cell temperature, power limits,
 // time limited.
@@ -43,6 +47,7 @@ class BatteryParticipant : public cosim::Participant {
   void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
 
  private:
+  void readPackSet(BatteryParams& p);
   std::unique_ptr<BatteryModel> model_;
   cosim::Input<hybrid_bus_twin::EMachineState>* emachine_ = nullptr;
   cosim::Input<hybrid_bus_twin::VehicleState>* vehicle_ = nullptr;  // DC/DC load of the 24 V consumers
