@@ -10,32 +10,21 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "common/yaml_params.hpp"
+#include "support.hpp"
 
 using namespace hbt;
 using namespace hbt::battery;
+using hbt::battery::test::shippedParams;
 using units::celsiusToK;
 
 namespace {
 
 constexpr const char* kProduction = "config/battery_pack/production_13s2p.yaml";
 
-BatteryParams withSet(const std::string& set_file) {
-  BatteryParams p;
-  ParamSet ps;
-  p.declare(ps);
-  applyParams(ps, readYamlParams("config/battery.yaml"), {"cosim/"});
-  if (!set_file.empty()) {
-    ParamSet set;
-    p.declarePackSet(set);
-    applyParamFile(set, set_file);
-  }
-  return p;
-}
-
 }  // namespace
 
 TEST(PackSets, ProductionSetReplacesOnlyPackAndHousing) {
-  const BatteryParams base = withSet(""), prod = withSet(kProduction);
+  const BatteryParams base = shippedParams(""), prod = shippedParams(kProduction);
   EXPECT_EQ(prod.pack.cells_in_series, 13);
   EXPECT_EQ(prod.pack.cells_in_parallel, 2);
   EXPECT_LT(prod.housing.area_m2, base.housing.area_m2);
@@ -61,7 +50,7 @@ TEST(PackSets, ProductionSetReplacesOnlyPackAndHousing) {
 }
 
 TEST(PackSets, PowerLimitsScaleWithTheParallelStrings) {
-  BatteryModel big(withSet(""), "config/battery.yaml"), small(withSet(kProduction), kProduction);
+  BatteryModel big(shippedParams(""), "config/battery.yaml"), small(shippedParams(kProduction), kProduction);
   std::printf("13s2p: %.0f Ah, %.2f kWh nominal (3.7 V), cell mass %.1f kg\n", 2 * 27.0, 26 * 27.0 * 3.7 / 1e3,
               26 * small.params().cell.mass_kg);
   for (double Tc : {25.0, 5.0, 0.0})

@@ -12,32 +12,21 @@
 #include "battery/battery_model.hpp"
 #include "battery/pack_thermal.hpp"
 #include "common/units.hpp"
+#include "support.hpp"
 #include "common/yaml_params.hpp"
 
 using namespace hbt;
 using namespace hbt::battery;
+using hbt::battery::test::shippedParams;
 using units::celsiusToK;
 
 namespace {
 
 constexpr double kSigma = 5.670374419e-8;
 
-BatteryParams shipped(const std::string& pack_file = "") {
-  BatteryParams p;
-  ParamSet ps;
-  p.declare(ps);
-  applyParams(ps, readYamlParams("config/battery.yaml"), {"cosim/"});
-  if (!pack_file.empty()) {
-    ParamSet set;
-    p.declarePackSet(set);
-    applyParamFile(set, pack_file);
-  }
-  return p;
-}
-
 // The network of the shipped 13s7p pack, parameters taken through the model (as the node does).
 PackThermalParams shippedNetwork(const std::string& pack_file = "") {
-  const BatteryModel m(shipped(pack_file), "config/battery.yaml");
+  const BatteryModel m(shippedParams(pack_file), "config/battery.yaml");
   return m.thermal().params();
 }
 
@@ -104,7 +93,7 @@ TEST(PackThermal, SteadyStateIsTheThreeNodeNetworkSolvedByHand) {
   //   a: G_ca (a - c) + G_aw (a - w) + G_v a = Q_f
   //   w: G_aw (w - a) + G_r (w - c) + G_o w = 0          (Cramer's rule on the 3x3 system)
   // The heat leaves by G_o w (housing) and G_v a (ventilation air); their sum is Q + Q_f.
-  const BatteryParams bp = shipped();
+  const BatteryParams bp = shippedParams();
   PackThermal net(shippedNetwork());
   const double Ta = celsiusToK(40.0), Q = 400.0;
   const int n = bp.pack.cells_in_series * bp.pack.cells_in_parallel;
@@ -242,7 +231,7 @@ TEST(PackThermal, ConductanceOfTheShippedPacks) {
   // the cells' own surface (h_c A_cells + radiation), which bounds any path from the cells.
   for (const char* f : {"", "config/battery_pack/production_13s2p.yaml"}) {
     PackThermal net(shippedNetwork(f));
-    const BatteryParams bp = shipped(f);
+    const BatteryParams bp = shippedParams(f);
     for (double ambient_c : {0.0, 40.0}) {
       const double Ta = celsiusToK(ambient_c);
       const PackConductances gon = net.conductances(true, 0.0, Ta);

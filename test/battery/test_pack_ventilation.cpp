@@ -10,26 +10,15 @@
 #include "battery/battery_model.hpp"
 #include "battery/pack_ventilation.hpp"
 #include "common/units.hpp"
+#include "support.hpp"
 #include "common/yaml_params.hpp"
 
 using namespace hbt;
 using namespace hbt::battery;
+using hbt::battery::test::shippedParams;
 using units::celsiusToK;
 
 namespace {
-
-BatteryParams shipped(const std::string& pack_file = "") {
-  BatteryParams p;
-  ParamSet ps;
-  p.declare(ps);
-  applyParams(ps, readYamlParams("config/battery.yaml"), {"cosim/"});
-  if (!pack_file.empty()) {
-    ParamSet set;
-    p.declarePackSet(set);
-    applyParamFile(set, pack_file);
-  }
-  return p;
-}
 
 PackVentilationParams example() {
   PackVentilationParams v;
@@ -96,7 +85,7 @@ TEST(PackVentilation, ShippedPacks) {
   // The shipped fans, filter, gaps and losses: the operating point lies on both curves, the flow
   // is a fraction of the fans' free-air flow, and m_dot c_p is tens of W/K.
   for (const char* f : {"", "config/battery_pack/production_13s2p.yaml"}) {
-    const BatteryParams bp = shipped(f);
+    const BatteryParams bp = shippedParams(f);
     const BatteryModel m(bp, "config/battery.yaml");
     const PackVentilation& vent = m.thermal().ventilation();
     const auto& v = bp.ventilation;
