@@ -2,6 +2,7 @@
 
 #include <sys/statvfs.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 
@@ -21,8 +22,8 @@ std::string describeWriteFailure(const std::string& file, const std::string& wha
   return msg;
 }
 
-AsyncBagWriter::AsyncBagWriter(const std::string& file, std::size_t max_queued)
-    : file_(file), max_queued_(max_queued > 0 ? max_queued : 1) {
+AsyncBagWriter::AsyncBagWriter(const std::string& file, std::size_t max_queued_bytes)
+    : file_(file), max_queued_bytes_(max_queued_bytes) {
   bag_->open(file, rosbag::bagmode::Write);
   thread_ = std::thread(&AsyncBagWriter::run, this);
 }
@@ -34,12 +35,21 @@ AsyncBagWriter::~AsyncBagWriter() {
   }
 }
 
-void AsyncBagWriter::push(Job job) {
+void AsyncBagWriter::push(Job job, std::size_t bytes) {
   std::unique_lock<std::mutex> lk(m_);
-  cv_space_.wait(lk, [this] { return queue_.size() < max_queued_ || !error_.empty() || stop_; });
+  const auto has_space = [&] {
+    return queue_.empty() || queued_bytes_ + bytes <= max_queued_bytes_ || !error_.empty() || stop_;
+  };
+  if (!has_space()) {
+    ++stats_.producer_waits;
+    cv_space_.wait(lk, has_space);
+  }
   if (!error_.empty()) throw std::runtime_error(error_);
   if (stop_) throw std::runtime_error("writing " + file_ + ": the bag is closed");
-  queue_.push_back(std::move(job));
+  queue_.push_back({std::move(job), bytes});
+  queued_bytes_ += bytes;
+  stats_.high_water_bytes = std::max(stats_.high_water_bytes, queued_bytes_);
+  stats_.high_water_messages = std::max(stats_.high_water_messages, queue_.size());
   lk.unlock();
   cv_work_.notify_one();
 }
@@ -51,7 +61,8 @@ void AsyncBagWriter::run() {
       std::unique_lock<std::mutex> lk(m_);
       cv_work_.wait(lk, [this] { return !queue_.empty() || stop_; });
       if (queue_.empty()) return;  // stop_ and drained
-      job = std::move(queue_.front());
+      job = std::move(queue_.front().job);
+      queued_bytes_ -= queue_.front().bytes;
       queue_.pop_front();
     }
     cv_space_.notify_one();
@@ -63,6 +74,7 @@ void AsyncBagWriter::run() {
       std::lock_guard<std::mutex> lk(m_);
       if (error_.empty()) error_ = describeWriteFailure(file_, e.what());
       queue_.clear();
+      queued_bytes_ = 0;
       cv_space_.notify_all();
       return;
     }
@@ -92,6 +104,11 @@ void AsyncBagWriter::close() {
 std::size_t AsyncBagWriter::written() const {
   std::lock_guard<std::mutex> lk(m_);
   return written_;
+}
+
+BagQueueStats AsyncBagWriter::queueStats() const {
+  std::lock_guard<std::mutex> lk(m_);
+  return stats_;
 }
 
 void AsyncBagWriter::throwIfFailed() {

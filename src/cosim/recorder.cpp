@@ -148,6 +148,14 @@ void Recorder::writeAt(const ros::Time& t) {
   wrote_any_ = true;
 }
 
+void Recorder::diagnosticValues(core::Nanos, std::vector<core::KeyValue>& kv) {
+  if (!bag_) return;  // closed: the final status is built before close()
+  const BagQueueStats q = bag_->queueStats();
+  kv.push_back({"bag_queue_high_water_kib", core::formatNumber(q.high_water_bytes / 1024.0)});
+  kv.push_back({"bag_queue_high_water_messages", std::to_string(q.high_water_messages)});
+  kv.push_back({"bag_queue_producer_waits", std::to_string(q.producer_waits)});
+}
+
 bool Recorder::readyToClose(const ros::Time& t_end) const {
   for (const auto& r : topics_)
     if (!r->input()->readyFor(t_end.toNSec())) return false;

@@ -19,6 +19,8 @@
 //
 // run.bag is written by an AsyncBagWriter (bag_writer.hpp): the lock-step thread only queues a
 // copy of each message held at the record stamp; serialisation and the file run on its thread.
+// Its queue's high-water marks are the recorder's diagnostic key/values (bag_queue_high_water_kib,
+// bag_queue_high_water_messages, bag_queue_producer_waits).
 //
 // Diagnostics (optional, private diagnostics_bag_file [path]): every DiagnosticArray on
 // /diagnostics (cosim/participant.hpp) is written as it arrives to that second bag (bag time =
@@ -63,6 +65,8 @@ class Recorder : public Participant {
                        const std::vector<std::string>& participants) override;
   void close(const ros::Time& t_end, bool aborted) override;
   void stepperLost(const ros::Time& t, const std::string& message) override;
+  /// run.bag's writer queue: its high-water marks (bytes, messages) and the producer's waits.
+  void diagnosticValues(core::Nanos t, std::vector<core::KeyValue>& kv) override;
 
  private:
   void writeAt(const ros::Time& t);

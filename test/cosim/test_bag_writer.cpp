@@ -49,7 +49,8 @@ TEST(AsyncBagWriter, SameBytesAsInlineWrite) {
     rosbag::Bag bag(inline_file, rosbag::bagmode::Write);
     writeSequence([&](const std::string& topic, const ros::Time& t, const auto& m) { bag.write(topic, t, m); }, n);
   }
-  for (std::size_t max_queued : {std::size_t(100000), std::size_t(3)}) {  // 3: the producer waits
+  // the default budget, and 1 byte: one message at a time, the producer waits for each
+  for (std::size_t max_queued : {hbt::cosim::AsyncBagWriter::kDefaultMaxQueued_bytes, std::size_t(1)}) {
     hbt::cosim::AsyncBagWriter w(async_file, max_queued);
     writeSequence([&](const std::string& topic, const ros::Time& t, const auto& m) {
       using M = std::decay_t<decltype(m)>;
@@ -71,6 +72,29 @@ TEST(AsyncBagWriter, SameBytesAsInlineWrite) {
     ++i;
   }
   EXPECT_EQ(i, n);
+}
+
+// The budget bounds what the queue holds: never more bytes than the budget (a job is counted as
+// its serialised message + topic + kJobOverhead_bytes), and a budget below one job's size queues
+// one message at a time; the high-water marks say what it held at most.
+TEST(AsyncBagWriter, QueueBudgetBoundsTheMemory) {
+  using hbt::cosim::AsyncBagWriter;
+  const std::size_t float_job_bytes = 8 + std::string("/a/state").size() + AsyncBagWriter::kJobOverhead_bytes;
+  const std::size_t budget = 10 * float_job_bytes;
+  for (std::size_t max_queued : {std::size_t(1), budget}) {
+    AsyncBagWriter w(tmpFile("budget.bag"), max_queued);
+    for (int i = 0; i < 20000; ++i)
+      w.write("/a/state", ros::Time(1 + i, 0), std::make_shared<const std_msgs::Float64>());
+    const hbt::cosim::BagQueueStats s = w.queueStats();
+    w.close();
+    EXPECT_EQ(w.written(), std::size_t(20000));
+    EXPECT_GE(s.high_water_messages, std::size_t(1));
+    EXPECT_EQ(s.high_water_bytes, s.high_water_messages * float_job_bytes);  // one kind of job
+    if (max_queued == 1)
+      EXPECT_EQ(s.high_water_messages, std::size_t(1));
+    else
+      EXPECT_LE(s.high_water_bytes, budget);
+  }
 }
 
 TEST(AsyncBagWriter, ErrorsAreNotSilent) {
