@@ -8,7 +8,7 @@ import unittest
 import numpy as np
 import yaml
 
-from twin_tools.bench import cli
+from twin_tools.bench import study
 from twin_tools.paths import REPO
 from twin_tools.report import thermal
 
@@ -43,7 +43,7 @@ class StudyKeys(unittest.TestCase):
                 ("1d", 0, "", "hybrid_urban"): ("out", dict(good, em_clamped_s=0.5)),
                 ("1d", 40, "", "baseline_urban"): ("out", dict(good, stops_served=120)),
                 ("map", 0, "", "baseline_urban"): ("out", None)}
-        failed = sorted(what for what, ok in cli.study_checks(runs) if not ok)
+        failed = sorted(what for what, ok in study.study_checks(runs) if not ok)
         self.assertEqual(len(failed), 4, failed)
         self.assertTrue(any("0 engine starts" in f for f in failed))
         self.assertTrue(any("em_clamped_s 0.5" in f for f in failed))

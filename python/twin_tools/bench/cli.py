@@ -25,6 +25,14 @@
                                     e-machine's and battery's limits: exit 1 otherwise), and one
                                     table per engine and temperature (SOC-corrected saving:
                                     twin_tools.report.hybrid)
+  scripts/twin bench study [--engine 1d|map] [--until S] [--jobs N] [--slurm]  the ambient study
+                                    as a sweep (config/sweeps/study.yaml: baseline_urban and
+                                    hybrid_urban at 0, 25 and 40 degC, full Urban, HVAC on, 1D
+                                    engine unless --engine map), N runs at a time (default 2) or a
+                                    Slurm job array; prints the study table (fuel, SOC-corrected
+                                    hybrid fuel, saving, warm-up, engine-off time, starts, heater
+                                    fuel, NOx) with its checks and the wall time, writes
+                                    docs/bench/study.md (study_map.md; twin_tools.bench.study)
   scripts/twin bench rates [--engines map,1d] [--until S]  multi-rate stepping vs everything at
                                     the 10 ms base step (cooling macro step, ATS model step 0.01 s
                                     in a config copy): fuel and temperature rises
@@ -52,6 +60,8 @@ import time
 
 from twin_tools.bench import cosim as bench_cosim
 from twin_tools.bench import soak as bench_soak
+from twin_tools.bench import study as bench_study
+from twin_tools.bench.study import cell, study_checks, study_table
 from twin_tools.bench.docs import Measurement
 from twin_tools.bench.rates_config import all_fast_config
 from twin_tools.paths import REPO
@@ -259,68 +269,6 @@ HYBRID_ROWS = [("fuel_kg", "fuel [kg]", "%.3f"), ("fuel_soc_corrected_kg", "fuel
                ("warmup_inhibit_s", "warm-up inhibit [s]", "%.0f"), ("stops_served", "stops served", "%d"),
                ("electric_path_closure", "electric-path balance", "%.1e"), ("speed_rmse_kmh", "speed RMSE [km/h]", "%.2f")]
 
-# The study table (one row per engine, ambient and HVAC setting): (key, header, format); "b:"
-# takes the baseline's value, "h:" the hybrid's.
-STUDY_COLUMNS = [("b:fuel_kg", "fuel baseline [kg]", "%.2f"), ("h:fuel_soc_corrected_kg", "hybrid, SOC-corr. [kg]", "%.2f"),
-                 ("h:fuel_saving_pct", "saving [%]", "%.1f"),
-                 ("b:coolant_warm_s", "70 °C baseline [s]", "%.0f"), ("h:coolant_warm_s", "70 °C hybrid [s]", "%.0f"),
-                 ("h:engine_off_s", "engine off [s]", "%.0f"), ("h:engine_starts", "starts", "%d"),
-                 ("b:heater_fuel_kg", "heater fuel b/h [kg]", "%.2f"), ("h:heater_fuel_kg", None, "%.2f"),
-                 ("h:hvac_kwh", "HVAC hybrid [kWh]", "%.1f"),
-                 ("b:nox_engine_out_g", "NOx eo b/h [g]", "%.0f"), ("h:nox_engine_out_g", None, "%.0f"),
-                 ("b:nox_tailpipe_g", "NOx tp b/h [g]", "%.0f"), ("h:nox_tailpipe_g", None, "%.0f"),
-                 ("h:scr_standstill_mean_c", "SCR at stops, hybrid [°C]", "%.0f")]
-
-
-def _cell(s, key, fmt):
-    return (fmt % s[key]) if s and key in s and s[key] is not None else "-"
-
-
-def study_table(results, engines, hvacs):
-    """The study's table in Markdown lines: one row per engine, ambient and HVAC setting."""
-    heads = []
-    for key, head, _ in STUDY_COLUMNS:
-        if head is None:
-            continue
-        heads.append(head)
-    lines = ["| engine | °C | HVAC | " + " | ".join(heads) + " |", "|---" * (3 + len(heads)) + "|"]
-    for engine in engines:
-        for hvac in hvacs:
-            for amb in (0, 25, 40):
-                b = results[(engine, amb, hvac, "baseline_urban")][1]
-                h = results[(engine, amb, hvac, "hybrid_urban")][1]
-                cells = []
-                for key, head, fmt in STUDY_COLUMNS:
-                    who, k = key.split(":")
-                    c = _cell(b if who == "b" else h, k, fmt)
-                    if head is None:
-                        cells[-1] += " / " + c
-                    else:
-                        cells.append(c)
-                lines.append("| %s | %d | %s | %s |" % (engine, amb, hvac or "default", " | ".join(cells)))
-    return lines
-
-
-def study_checks(results, full_mission=True):
-    """The invariants every study run must meet: (description, ok) per check. The engine's
-    restart (with either engine model) is checked on the full mission only."""
-    checks = []
-    for (engine, amb, hvac, scen), (_, s) in sorted(results.items()):
-        name = "%s %s %d °C%s" % (scen, engine, amb, " hvac:=" + hvac if hvac else "")
-        if not s:
-            checks.append(("%s: ended ok" % name, False))
-            continue
-        checks.append(("%s: %s/%s stops served" % (name, s.get("stops_served"), s.get("stops_total")),
-                       s.get("stops_served") == s.get("stops_total")))
-        if scen == "hybrid_urban":
-            if full_mission:
-                checks.append(("%s: %s engine starts" % (name, s.get("engine_starts")), s.get("engine_starts", 0) > 0))
-            checks.append(("%s: em_clamped_s %s, battery_limited_s %s" % (name, s.get("em_clamped_s"),
-                                                                         s.get("battery_limited_s")),
-                           s.get("em_clamped_s") == 0.0 and s.get("battery_limited_s") == 0.0))
-    return checks
-
-
 def bench_hybrid(a):
     """Baseline vs hybrid at 0, 25 and 40 degC with each engine (nodelets) and each HVAC setting."""
     from concurrent.futures import ThreadPoolExecutor
@@ -380,7 +328,7 @@ def bench_hybrid(a):
                 lines += ["## %s engine, %d °C%s" % (engine, amb, ", hvac:=" + hvac if hvac else ""), "",
                           "| quantity | baseline | hybrid |", "|---|---|---|"]
                 for key, label, fmt in HYBRID_ROWS:
-                    lines.append("| %s | %s | %s |" % (label, _cell(bs, key, fmt), _cell(hs, key, fmt)))
+                    lines.append("| %s | %s | %s |" % (label, cell(bs, key, fmt), cell(hs, key, fmt)))
                 for s, name in ((bs, "baseline"), (hs, "hybrid")):
                     if s:
                         table["%s_%s_%d%s" % (name, engine, amb, "_hvac-" + hvac if hvac else "")] = s
@@ -436,11 +384,14 @@ def main():
     ap = argparse.ArgumentParser(prog="twin bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", nargs="?", default="map",
-                    choices=["map", "1d", "engine", "ambient", "hybrid", "rates", "cosim", "soak"])
+                    choices=["map", "1d", "engine", "ambient", "hybrid", "study", "rates", "cosim", "soak"])
     ap.add_argument("--engines", default="map,1d", help="ambient, hybrid: engine models, comma-separated")
+    ap.add_argument("--engine", default="1d", choices=["1d", "map"], help="study: the engine model (default 1d)")
+    ap.add_argument("--slurm", action="store_true", help="study: the sweep as a Slurm job array (twin sweep --slurm)")
     ap.add_argument("--hvac", default="", help="hybrid: HVAC settings to run, comma-separated (on,off; default: "
                                               "the scenarios' default only)")
-    ap.add_argument("--jobs", type=int, default=None, help="ambient, hybrid (default 1), soak (default 4): runs at a time")
+    ap.add_argument("--jobs", type=int, default=None, help="ambient, hybrid (default 1), study (default 2), "
+                                                           "soak (default 4): runs at a time")
     ap.add_argument("--runs", type=int, default=20, help="soak: missions")
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     ap.add_argument("--duration", type=float, default=1800.0,
@@ -449,9 +400,11 @@ def main():
     a = ap.parse_args()
     a.measurement = Measurement(sys.argv[1:])
     if a.jobs is None:
-        a.jobs = 4 if a.what == "soak" else 1
+        a.jobs = {"soak": 4, "study": 2}.get(a.what, 1)
     if a.what == "soak":
         return bench_soak.bench_soak(a)
+    if a.what == "study":
+        return bench_study.bench_study(a)
     if a.what == "cosim":
         return bench_cosim.bench_cosim(a, REPO)
     return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient, "hybrid": bench_hybrid, "rates": bench_rates}[a.what](a)

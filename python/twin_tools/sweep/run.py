@@ -6,7 +6,8 @@ ephemeral ports (so no bind(0) of another program ever gets it), is locked for t
 with flock on /tmp/hbt_ros_ports/<port>.lock (so no other sweep run on this machine, of this
 sweep or another, picks it) and must be free when the run starts; `twin run` uses it through
 HBT_ROS_PORT. A run's own output goes to its folder (twin.log: twin's console; roslaunch.log:
-every node); its exit code and wall time to sweep_task.json, which the table reads.
+every node); its exit code, wall time, host and (a Slurm task) job id and node name to
+sweep_task.json, which the table reads.
 """
 import json
 import os
@@ -55,7 +56,8 @@ def run_task(plan, i, started=None):
     finally:
         os.close(lock)
     write_json(task_file, {"rc": rc, "wall_s": time.time() - t0, "start_unix_s": t0, "port": port,
-                           "host": socket.gethostname(), "slurm_job": os.environ.get("SLURM_ARRAY_JOB_ID")})
+                           "host": socket.gethostname(), "slurm_job": os.environ.get("SLURM_ARRAY_JOB_ID"),
+                           "slurm_node": os.environ.get("SLURMD_NODENAME")})
     return rc
 
 

@@ -2,7 +2,8 @@
 per run of OUT/plan.json with the varied parameters, ok/failed (+ the reason), and from the run's
 summary.json (twin_tools.report.postprocess) fuel, L/100 km, NOx, final SOC, warnings; fuel_saving_pct
 of a hybrid run against the conventional run with the same parameters (SOC-corrected,
-twin_tools.report.hybrid); the run's wall time (sweep_task.json). Written as OUT/sweep.csv (full
+twin_tools.report.hybrid); the run's wall time (sweep_task.json; for a Slurm array, sweep.md also
+names the node that ran each run). Written as OUT/sweep.csv (full
 precision), OUT/sweep.md and OUT/plots/<quantity>.png (each quantity against the first numeric
 axis, one line per combination of the other parameters).
 """
@@ -73,6 +74,7 @@ def run_row(r):
             row["reason"] = _last_twin_line(d) or "exit status %s" % task["rc"]
     row["reason"] = row["reason"].replace(os.path.dirname(os.path.dirname(d)) + os.sep, "")  # runs/<id>/...
     row["wall_s"] = task["wall_s"] if task else None
+    row["node"] = task.get("slurm_node") if task else None
     return row
 
 
@@ -209,6 +211,12 @@ def write_md(path, plan, rows, axes, timing, files):
         lines += ["Sweep wall time %.1f s (%s, %s); sum of the runs' wall times %.1f s: %.2fx." % (
             timing["wall_s"], "Slurm job array %s" % timing["slurm_job"] if timing.get("slurm_job")
             else "this machine", "%d at a time" % timing["jobs"], sum(walls), sum(walls) / timing["wall_s"]), ""]
+    nodes = {}
+    for r in rows:
+        if r.get("node"):
+            nodes.setdefault(r["node"], []).append(r["run"][:3])
+    if nodes:  # a Slurm array: which compute node ran which run (sweep_task.json slurm_node)
+        lines += ["Slurm nodes: " + "; ".join("%s ran %s" % (n, ", ".join(ids)) for n, ids in sorted(nodes.items())) + ".", ""]
     cols = columns(axes)
     lines.append("| " + " | ".join(cols) + " |")
     lines.append("|" + "---|" * len(cols))
