@@ -186,7 +186,7 @@ class Resolver {
         const bool exists = hasVariable(path);
         if (!exists)
           mapError("outputs", "field " + path + " of " + topic(ctx_.participant, key) + " (" + layout.datatype() +
-                                  ") is not provided: the FMU has no output '" + path +
+                                  ") is not provided: FMU " + md_.fmuFile() + " has no output '" + path +
                                   "'; map it (outputs) or declare it (not_provided, with the value it is published as)");
         claim(path, "outputs");
         r_.outputs.push_back(bind({ctx_.participant, key, f.name, -1}, layout, path, path, "", false, "outputs"));
