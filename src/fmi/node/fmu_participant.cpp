@@ -232,7 +232,11 @@ void FmuParticipant::makePorts() {
     out_ports_.emplace(key, std::move(port));
   }
   for (const auto& f : map_.not_provided) out_ports_.at(f.key)->set(f.field, -1, f.value);
-  for (const auto& b : map_.outputs) out_port_of_.push_back(out_ports_.at(b.key).get());
+  for (const auto& b : map_.outputs) {
+    const OutPort& port = *out_ports_.at(b.key);
+    if (port.layout().fields()[b.field].name == "mission_finished") mission_finished_output_ = static_cast<int>(out_port_of_.size());
+    out_port_of_.push_back(out_ports_.at(b.key).get());
+  }
   for (const auto& b : map_.inputs) {
     const std::string topic = cosim::topicName(b.participant, b.key);
     auto it = in_ports_.find(topic);
@@ -275,6 +279,7 @@ void FmuParticipant::readOutputs() {
     else if (b.type == VarType::kInteger) v = inst_->getInteger(out_refs_[i]);
     else v = inst_->getBoolean(out_refs_[i]) ? 1.0 : 0.0;
     out_port_of_[i]->set(b.field, b.element, v);
+    if (static_cast<int>(i) == mission_finished_output_) mission_finished_ = v != 0.0;
   }
 }
 

@@ -52,6 +52,9 @@ class FmuParticipant : public cosim::Participant {
   void publishOutputs(const ros::Time& t) override;
   void step(const ros::Time& t, double dt_s) override;
   void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
+  /// The end of the mission as the participant it replaces announces it: an output field
+  /// `mission_finished` (the vehicle's) that the FMU sets true; never for any other FMU.
+  bool finished() const override { return mission_finished_; }
 
  private:
   MappingSpec readSpec() const;
@@ -75,6 +78,8 @@ class FmuParticipant : public cosim::Participant {
   std::map<std::string, std::unique_ptr<InPort>> in_ports_;    // "/producer/key" -> port
   std::vector<InPort*> in_port_of_;    // per map_.inputs
   std::vector<OutPort*> out_port_of_;  // per map_.outputs
+  int mission_finished_output_ = -1;  // index in map_.outputs of a field mission_finished, -1: none
+  bool mission_finished_ = false;
   long log_warnings_ = 0, log_errors_ = 0;
   std::string last_log_;
 };
