@@ -12,6 +12,9 @@ macro step 0.1 s) and in place of a native participant of hybrid_urban:
   temperature of the end of the same step (held over the step), so exactly
   T_b(t+P) = T_a(t+P) + (T_b(t) - T_a(t+P)) exp(-G P / C), with T_a exact; the Jacobi value (T_a(t))
   differs by far more than the tolerance, so the test sees the order.
+- In place of a native participant: hvac_fmu:= in baseline_urban (20 s) serves the hvac by the
+  thermal mass (its ambient read from the vehicle, every other field declared not provided):
+  the run completes with the others reading it, the cabin temperature is exact.
 - Bad FMUs rejected before step 0, naming the file and the problem (status.json): not a zip,
   FMI 3.0, no linux64 binary, a missing function, a mapped variable that does not exist, an
   incompatible unit, a stopTime before the run's end; through `twin run hybrid_urban
@@ -225,6 +228,54 @@ class FmuParticipant(unittest.TestCase):
         for f in ("battery", fmu, "battery.state.terminal_voltage_v", "not_provided"):
             self.assertIn(f, st["message"])
         print("\n  battery_fmu: %s" % st["message"])
+
+    def test_fmu_in_place_of_the_hvac_in_baseline_urban(self):
+        """hvac_fmu:= replaces the hvac participant of baseline_urban by the thermal mass as a
+        "cabin": its ambient read from the vehicle's /vehicle/to_cooling (K -> degC), its T
+        published as hvac.state.cabin_temperature_k, every other field of HvacState declared not
+        provided (published as 0). The others read it under the same topic: the run completes,
+        the cabin temperature follows the exact solution with the held ambient."""
+        import yaml
+        fields = []
+        with open(os.path.join(REPO, "msg", "HvacState.msg")) as f:
+            for line in f:
+                words = line.split("#")[0].split()
+                if len(words) == 2 and words[0] != "std_msgs/Header":
+                    fields.append(words[1])
+        doc = {"interface": "cs",
+               "inputs": [{"field": "vehicle.to_cooling.ambient_temperature_k", "variable": "T_amb"}],
+               "outputs": [{"field": "hvac.state.cabin_temperature_k", "variable": "T"}],
+               "not_provided": [{"field": "hvac.state." + n, "value": 0.0, "reason": "test: a cabin temperature only"}
+                                for n in fields if n != "cabin_temperature_k"],
+               "parameters": [{"variable": "T_start", "value": 308.15}]}  # [K] 35 degC
+        path = os.path.join(self.tmp, "hvac_map.yaml")
+        with open(path, "w") as f:
+            yaml.safe_dump(doc, f)
+        out = os.path.join(self.tmp, "hvac")
+        t0 = time.time()
+        st = run_util.run_launch(os.path.join(REPO, "launch", "baseline_urban.launch"), out, until=20.0,
+                                 ambient=25, record_period=0, timeout=10.0,
+                                 hvac_fmu=os.path.join(FMUS, "thermal_mass.fmu"), hvac_fmu_map=path)
+        self.wall["hvac_fmu baseline 20 s"] = time.time() - t0
+        self.assertEqual(st["status"], "ok", st)
+        import rosbag
+        cabin, n_vehicle = {}, 0
+        with rosbag.Bag(os.path.join(out, "run.bag")) as b:
+            for topic, m, _ in b.read_messages(topics=["/hvac/state", "/vehicle/state"]):
+                if topic == "/hvac/state":
+                    cabin[m.header.stamp.to_nsec()] = m
+                else:
+                    n_vehicle += 1
+        self.assertEqual(len(cabin), 201)  # hvac.yaml macro step 0.1 s, 0 .. 20 s
+        self.assertGreater(n_vehicle, 1000)  # the vehicle ran at its 10 ms beside it
+        err = max(abs(m.cabin_temperature_k - mass_exact(ns * 1e-9, t0=308.15, amb=298.15)) for ns, m in cabin.items())
+        print("\n  hvac_fmu: max |cabin T - exact| = %.3g K over %d stamps" % (err, len(cabin)))
+        self.assertLess(err, 1e-9)
+        self.assertTrue(all(m.heating_demand_w == 0.0 and not m.doors_open for m in cabin.values()))
+        with open(os.path.join(out, "resolved_config", "hvac_fmu.csv")) as f:
+            rows = [r for r in f if not r.startswith("#")]
+        self.assertEqual(sum(r.startswith("not_provided,") for r in rows), len(fields) - 1)
+        self.assertIn("input,vehicle.to_cooling.ambient_temperature_k,T_amb,degC", "".join(rows))
 
     def test_fmu_failures_mid_run_stop_it_cleanly(self):
         for name, fragments in (("error_at_2s", ["fmi2DoStep", "t = 2"]), ("nan_at_2s", ["'T'", "NaN", "t = 2"])):
