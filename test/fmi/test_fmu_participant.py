@@ -210,6 +210,10 @@ class FmuParticipant(unittest.TestCase):
             f.write('outputs:\n  - {field: "mass_a.state.values[0]", variable: T, unit: W}\n')
         self.rejected("incompatible_unit", [good, "variable 'T'", '"degC"', "incompatible", "W"],
                       mass_a_fmu=good, mass_a_map=bad_unit)
+        typo = os.path.join(self.tmp, "typo.yaml")
+        with open(typo, "w") as f:
+            f.write('output:\n  - {field: "mass_a.state.values[0]", variable: T, unit: K}\n')
+        self.rejected("mapping_key_unknown", [typo, "key 'output'", "unknown key"], mass_a_fmu=good, mass_a_map=typo)
         me = os.path.join(FMUS, "switched_decay.fmu")
         self.rejected("stop_time", [me, "stopTime 6", "until 7"], until=7.0, decay_fmu=me)
 
