@@ -20,7 +20,8 @@ macro step 0.1 s) and in place of a native participant of hybrid_urban:
   incompatible unit, a stopTime before the run's end; through `twin run hybrid_urban
   battery_fmu:=` an FMU that does not provide the battery's fields (exit code non-zero).
 - fmi2Error at t = 2 s and a NaN output at t = 2 s stop the run naming FMU, call or variable and
-  time; the bag is closed and readable up to there."""
+  time; the bag is closed and readable up to there. A doStep that never returns is the stepper's
+  step timeout, naming the participant."""
 import math
 import os
 import shutil
@@ -293,6 +294,19 @@ class FmuParticipant(unittest.TestCase):
             self.assertGreaterEqual(max(mass) * 1e-9, 1.9)
             self.assertLessEqual(max(mass) * 1e-9, 2.0 + 1e-9)
             self.assertLess(max(abs(v[0] - mass_exact(ns * 1e-9)) for ns, v in mass.items()), 1e-9)
+
+    def test_hung_do_step_is_the_step_timeout(self):
+        """A doStep that never returns (hang_at_2s, as a nodelet on the lock-step thread): the
+        stepper's step timeout (2 s here) names mass_a as silent, the recorder (on its own thread)
+        closes the bag with what came before."""
+        fmu = os.path.join(FMUS, "hang_at_2s.fmu")
+        out, st = self.run_scenario("hang_at_2s", until=5.0, timeout=2.0, mass_a_fmu=fmu)
+        self.assertEqual(st["status"], "error", st)
+        for f in ("mass_a", "did not answer", "node died or hung", "mass_a has been inside its model step (from t = 2.000 s)"):
+            self.assertIn(f, st["message"])
+        print("\n  hang_at_2s: %s" % st["message"])
+        mass = series(os.path.join(out, "run.bag"), "/mass_a/state")  # closed: readable (what the grants let through)
+        self.assertLessEqual(max(mass, default=0) * 1e-9, 2.0 + 1e-9)
 
 
 if __name__ == "__main__":
