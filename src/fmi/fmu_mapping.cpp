@@ -252,7 +252,17 @@ class Resolver {
     } else {
       mapError(key, std::string("FMU parameter is ") + hbt::fmi::name(v.type) + ": not settable from the mapping");
     }
+    checkRange(v, s.value_fmu, key);
     r_.parameters.push_back(s);
+  }
+
+  /// The FMU's own range of a parameter (its min / max, in its declared unit), as for our keys.
+  void checkRange(const ScalarVariable& v, double value_fmu, const std::string& key) const {
+    const bool low = v.min && value_fmu < *v.min, high = v.max && value_fmu > *v.max;
+    if (!low && !high) return;
+    auto str = [](const std::optional<double>& x, const char* none) { return x ? std::to_string(*x) : std::string(none); };
+    mapError(key, std::to_string(value_fmu) + " " + (v.unit.empty() ? "" : v.unit + " ") + "is outside the FMU's range [" +
+                      str(v.min, "-inf") + ", " + str(v.max, "inf") + "] of variable '" + v.name + "'");
   }
 
   void parameter(const MappingSpec::Param& p) {

@@ -9,7 +9,8 @@
 // - every rejection names what is wrong: an output field neither mapped nor declared not
 //   provided, wrong causality, wrong type, incompatible unit, a topic not in the scenario, a
 //   not_provided without its reason, a scenario parameter the scenario does not set, Model
-//   Exchange without CVODE tolerances.
+//   Exchange without CVODE tolerances, a parameter outside the FMU's min/max (in its unit) or of
+//   the wrong type.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -154,6 +155,26 @@ TEST(FmuMapping, MappingFileMistakesNameFileAndKey) {
   s.parameters.clear();
   s.interface = InterfaceType::kModelExchange;
   expectThrowWith<FmuError>([&] { resolveMapping(s, md, context()); }, {"no <ModelExchange>"});
+}
+
+TEST(FmuMapping, ParameterValuesAreCheckedAgainstTheFmusRange) {
+  // T_set declared in degC with max 90 degC: 370 K (96.85 degC) is outside, 350 K (76.85 degC) inside
+  const ModelDescription md = description(conventional(
+      var("T_set", "parameter", "<Real unit=\"degC\" min=\"-40\" max=\"90\" start=\"20\"/>", "fixed") +
+      var("cells", "parameter", "<Integer min=\"1\" max=\"16\" start=\"13\"/>", "fixed")));
+  MappingSpec s;
+  s.file = "map.yaml";
+  s.parameters = {{"T_set", 370.0, VarType::kReal}};
+  expectThrowWith<InputError>([&] { resolveMapping(s, md, context()); },
+                              {"map.yaml", "parameters/T_set", "96.85", "degC", "outside the FMU's range [-40.0", "90.0"});
+  s.parameters = {{"T_set", 350.0, VarType::kReal}, {"cells", 17, VarType::kInteger}};
+  expectThrowWith<InputError>([&] { resolveMapping(s, md, context()); }, {"parameters/cells", "17", "[1.0", "16.0"});
+  s.parameters = {{"T_set", 350.0, VarType::kReal}, {"cells", 7, VarType::kInteger}};
+  const ResolvedMapping r = resolveMapping(s, md, context());
+  EXPECT_NEAR(r.parameters[0].value_fmu, 76.85, 1e-12);
+  EXPECT_EQ(r.parameters[1].value_fmu, 7.0);
+  s.parameters = {{"cells", 7.5, VarType::kReal}};  // a number where the FMU wants an integer
+  expectThrowWith<InputError>([&] { resolveMapping(s, md, context()); }, {"parameters/cells", "Integer"});
 }
 
 TEST(FmuMapping, ScenarioParameterTheScenarioDoesNotSetIsRejected) {
