@@ -149,6 +149,8 @@ class ModelDescriptionParser {
     }
     if (const char* unit = elem->Attribute("unit")) sv.unit = checkedUnit(unit, where);
     if (const char* start = elem->Attribute("start")) sv.start = start;
+    if (elem->Attribute("min")) sv.min = number(*elem, "min", 0.0);
+    if (elem->Attribute("max")) sv.max = number(*elem, "max", 0.0);
     if (sv.causality == Causality::kInput && !sv.start) {
       fail(where + ": an input needs a start value (FMI 2.0, ScalarVariable: start is required for causality input)");
     }

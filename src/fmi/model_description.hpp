@@ -23,7 +23,7 @@ const char* name(Variability v);
 const char* name(VarType t);
 
 /// One ScalarVariable. unit: its own unit attribute, else its declaredType's ("" = none).
-/// start: the start attribute's text as written (empty if none).
+/// start: the start attribute's text as written (empty if none). min, max: as the FMU states them.
 struct ScalarVariable {
   std::string name;
   unsigned value_reference = 0;
@@ -33,6 +33,7 @@ struct ScalarVariable {
   std::string declared_type;
   std::string unit;
   std::optional<std::string> start;
+  std::optional<double> min, max;  // the type element's min / max, in the variable's unit, if stated
   std::string description;
 };
 

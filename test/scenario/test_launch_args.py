@@ -102,6 +102,30 @@ class LaunchArgs(unittest.TestCase):
         self.assertEqual(rc, 0)
         self.assertEqual(out, ["remote:=engine,cooling", "remote_host:=10.0.0.2", "remote_ssh_port:=2222"])
 
+    def test_fmu_arguments(self):
+        """<participant>_fmu:= an existing .fmu for a participant of this scenario; _fmu_map:= an
+        existing YAML mapping, only with its _fmu (the FMU's content is the participant's check)"""
+        import tempfile
+        with tempfile.TemporaryDirectory() as d:
+            fmu = os.path.join(d, "pack.fmu")
+            other = os.path.join(d, "pack.zip")
+            good, empty = os.path.join(d, "map.yaml"), os.path.join(d, "empty.yaml")
+            for path, text in ((fmu, "x"), (other, "x"), (good, "interface: cs\n"), (empty, "")):
+                with open(path, "w") as f:
+                    f.write(text)
+            self.rejected("engine_fmu:=%s/none.fmu" % d, "not found")
+            self.rejected("engine_fmu:=" + other, "not an .fmu file")
+            self.rejected("engine_fmu:=" + d, "not found")  # a folder
+            rc, _, err = check("battery_fmu:=" + fmu)  # baseline has no battery
+            self.assertIn("battery is not a participant of baseline_urban", err)
+            rc, _, err = check("engine_fmu_map:=" + good)
+            self.assertIn("engine_fmu_map' given without engine_fmu", err)
+            rc, _, err = check("engine_fmu:=" + fmu, "engine_fmu_map:=" + empty)
+            self.assertIn("empty", err)
+            rc, out, _ = check("battery_fmu:=" + fmu, "battery_fmu_map:=" + good, scenario="hybrid_urban")
+            self.assertEqual(rc, 0)
+            self.assertEqual(out, ["battery_fmu:=" + fmu, "battery_fmu_map:=" + good])
+
     def test_config_files_empty_or_garbage(self):
         """every YAML of the config folder must parse and hold keys: roslaunch would load an
         empty file as nothing (the model on its defaults) and name no file for garbage"""

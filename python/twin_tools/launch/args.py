@@ -87,6 +87,36 @@ ARGS = {
 # the participants that may run on another host (the stepper and the recorder stay with the
 # master and the results folder); which exist depends on the architecture and `thermal`
 PARTICIPANTS = wiring.participants()  # launch/include/urban.launch: one include each
+
+
+def fmu_file(v, repo, config=None):
+    """An FMU for <participant>_fmu: an existing regular file named .fmu (its content is checked
+    by the participant before step 0, naming the file and the problem)."""
+    path = existing("file")(v, repo, config)
+    if not path.endswith(".fmu"):
+        raise ValueError("'%s' is not an .fmu file" % v)
+    return path
+
+
+def fmu_map_file(v, repo, config=None):
+    """A mapping file for <participant>_fmu_map: an existing YAML mapping of keys (its keys are
+    checked by the participant, naming the file and the key)."""
+    import yaml
+    path = existing("file")(v, repo, config)
+    try:
+        with open(path, "rb") as f:
+            doc = yaml.safe_load(f.read().decode("utf-8"))
+    except (OSError, UnicodeDecodeError, yaml.YAMLError) as e:
+        raise ValueError("%s: not a readable YAML file: %s" % (path, str(e).replace("\n", " ")))
+    if not isinstance(doc, dict) or not doc:
+        raise ValueError("%s: %s" % (path, "empty" if not doc else "not a mapping of keys"))
+    return path
+
+
+# <participant>_fmu:=PATH.fmu serves that participant by an FMU; <participant>_fmu_map:=MAP.yaml
+for _p in PARTICIPANTS:
+    ARGS[_p + "_fmu"] = fmu_file
+    ARGS[_p + "_fmu_map"] = fmu_map_file
 SCENARIO_ARCHITECTURE = {"baseline_urban": "conventional", "hybrid_urban": "p1_48v"}
 
 
@@ -118,6 +148,30 @@ def absolute(v):
     return v
 
 
+def present_participants(scenario, given):
+    """The participants that run in this scenario with these arguments."""
+    arch = given.get("architecture", SCENARIO_ARCHITECTURE.get(scenario, "conventional"))
+    present = {"vehicle", "engine"}
+    if given.get("thermal", "true") == "true":
+        present |= {"aftertreatment", "cooling"}
+        if given.get("hvac", "on") == "on":
+            present |= {"hvac"}
+    if arch == "p1_48v":
+        present |= {"ems", "emachine", "battery"}
+    return present, arch
+
+
+def check_fmu(scenario, given):
+    """<participant>_fmu only for a participant of the scenario; _fmu_map only with its _fmu."""
+    present, arch = present_participants(scenario, given)
+    for p in PARTICIPANTS:
+        if p + "_fmu_map" in given and p + "_fmu" not in given:
+            sys.exit("twin: argument '%s_fmu_map' given without %s_fmu:=PATH.fmu" % (p, p))
+        if p + "_fmu" in given and p not in present:
+            sys.exit("twin: argument '%s_fmu': %s is not a participant of %s (architecture %s, thermal %s, hvac %s)"
+                     % (p, p, scenario, arch, given.get("thermal", "true"), given.get("hvac", "on")))
+
+
 def check_remote(scenario, given):
     """Cross-checks of the remote arguments (each one alone is checked above)."""
     remote = [p for p in given.get("remote", "").split(",") if p]
@@ -128,14 +182,7 @@ def check_remote(scenario, given):
         return
     if "remote_host" not in given:
         sys.exit("twin: argument 'remote': remote_host:=ADDRESS is required")
-    arch = given.get("architecture", SCENARIO_ARCHITECTURE.get(scenario, "conventional"))
-    present = {"vehicle", "engine"}
-    if given.get("thermal", "true") == "true":
-        present |= {"aftertreatment", "cooling"}
-        if given.get("hvac", "on") == "on":
-            present |= {"hvac"}
-    if arch == "p1_48v":
-        present |= {"ems", "emachine", "battery"}
+    present, arch = present_participants(scenario, given)
     for n in remote:
         if n not in present:
             sys.exit("twin: argument 'remote': %s is not a participant of %s (architecture %s, thermal %s, hvac %s)"
@@ -203,6 +250,7 @@ def main():
             sys.exit("twin: argument '%s': %s" % (name, e))
     check_architecture(scenario, given)
     check_remote(scenario, given)
+    check_fmu(scenario, given)
     check_yaml_files(config or os.path.join(repo, "config"))
     print("\n".join(out))
 

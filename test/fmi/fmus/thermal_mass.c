@@ -8,8 +8,12 @@
  *
  * Variants (compile definitions): HBT_FMU_OMIT_DO_STEP (no fmi2DoStep export),
  * HBT_FMU_ERROR_FROM_S=t (fmi2DoStep returns fmi2Error from communication time t [s] on),
- * HBT_FMU_NAN_FROM_S=t (T becomes NaN from t on). */
+ * HBT_FMU_NAN_FROM_S=t (T becomes NaN from t on), HBT_FMU_HANG_FROM_S=t (fmi2DoStep never returns
+ * from t on: it sleeps, as a hung tool would). */
 #include <math.h>
+#ifdef HBT_FMU_HANG_FROM_S
+#include <time.h>
+#endif
 #include <stdio.h>
 #include <string.h>
 
@@ -238,6 +242,14 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real t, fmi2Real h, fmi2Boolean no_pr
   if (t >= HBT_FMU_ERROR_FROM_S) {
     log_msg(m, fmi2Error, "error", "deliberate failure (%s)", "test variant error_at_2s");
     return fmi2Error;
+  }
+#endif
+#ifdef HBT_FMU_HANG_FROM_S
+  if (t >= HBT_FMU_HANG_FROM_S) {
+    for (;;) {
+      const struct timespec one_second = {1, 0};
+      nanosleep(&one_second, NULL);
+    }
   }
 #endif
   for (i = 0; i < n; ++i) {

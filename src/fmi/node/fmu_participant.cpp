@@ -1,0 +1,319 @@
+#include "fmi/node/fmu_participant.hpp"
+
+#include <sys/stat.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include "common/errors.hpp"
+#include "cosim/wiring.hpp"
+#include "fmi/fmu_error.hpp"
+
+namespace hbt::fmi {
+namespace {
+
+using XmlRpc::XmlRpcValue;
+
+bool isNumber(const XmlRpcValue& v) {
+  return v.getType() == XmlRpcValue::TypeDouble || v.getType() == XmlRpcValue::TypeInt;
+}
+double number(XmlRpcValue& v) {
+  return v.getType() == XmlRpcValue::TypeInt ? static_cast<double>(static_cast<int>(v)) : static_cast<double>(v);
+}
+
+/// The mapping file's keys (rosparams under fmu_map/) into a MappingSpec; InputError naming the
+/// file and key for anything unknown or mistyped.
+class SpecReader {
+ public:
+  SpecReader(const std::string& file, XmlRpcValue root) : file_(file), root_(std::move(root)) {}
+
+  MappingSpec read() {
+    MappingSpec s;
+    s.file = file_;
+    if (root_.getType() != XmlRpcValue::TypeStruct) fail("", "expected a mapping of keys");
+    static const std::set<std::string> known = {"interface", "model_exchange", "inputs", "outputs", "not_provided", "parameters"};
+    for (auto& kv : root_)
+      if (!known.count(kv.first)) fail(kv.first, "unknown key (known: interface, model_exchange, inputs, outputs, not_provided, parameters)");
+    if (root_.hasMember("interface")) {
+      const std::string i = str(root_["interface"], "interface");
+      if (i != "cs" && i != "me") fail("interface", "must be cs (Co-Simulation) or me (Model Exchange)");
+      s.interface = i == "cs" ? InterfaceType::kCoSimulation : InterfaceType::kModelExchange;
+    }
+    if (root_.hasMember("model_exchange")) readMe(root_["model_exchange"], s);
+    s.inputs = links("inputs");
+    s.outputs = links("outputs");
+    for (auto& e : list("not_provided")) {
+      MappingSpec::Fixed f;
+      f.field = str(e["field"], "not_provided/field");
+      f.value = num(e["value"], "not_provided/" + f.field + "/value");
+      f.reason = str(e["reason"], "not_provided/" + f.field + "/reason");
+      s.not_provided.push_back(f);
+    }
+    for (auto& e : list("parameters")) {
+      MappingSpec::Param p;
+      p.variable = str(e["variable"], "parameters/variable");
+      XmlRpcValue& v = e["value"];
+      const std::string key = "parameters/" + p.variable + "/value";
+      if (v.getType() == XmlRpcValue::TypeBoolean) p.type = VarType::kBoolean, p.value = static_cast<bool>(v) ? 1.0 : 0.0;
+      else if (v.getType() == XmlRpcValue::TypeInt) p.type = VarType::kInteger, p.value = static_cast<int>(v);
+      else p.value = num(v, key);
+      s.parameters.push_back(p);
+    }
+    return s;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const { throw InputError(file_, key, what); }
+  std::string str(XmlRpcValue& v, const std::string& key) const {
+    if (v.getType() != XmlRpcValue::TypeString || std::string(v).empty()) fail(key, "must be a non-empty string");
+    return v;
+  }
+  double num(XmlRpcValue& v, const std::string& key) const {
+    if (!isNumber(v)) fail(key, "must be a number");
+    const double x = number(v);
+    if (!std::isfinite(x)) fail(key, "must be finite");
+    return x;
+  }
+  void readMe(XmlRpcValue& me, MappingSpec& s) const {
+    if (me.getType() != XmlRpcValue::TypeStruct) fail("model_exchange", "expected rtol, atol, max_steps");
+    for (auto& kv : me)
+      if (kv.first != "rtol" && kv.first != "atol" && kv.first != "max_steps") fail("model_exchange/" + kv.first, "unknown key");
+    if (me.hasMember("rtol")) s.me_rtol = num(me["rtol"], "model_exchange/rtol");
+    if (me.hasMember("atol")) s.me_atol = num(me["atol"], "model_exchange/atol");
+    if (me.hasMember("max_steps")) {
+      if (me["max_steps"].getType() != XmlRpcValue::TypeInt) fail("model_exchange/max_steps", "must be an integer");
+      s.me_max_steps = static_cast<int>(me["max_steps"]);
+    }
+    if (s.me_rtol && !(*s.me_rtol > 0.0 && *s.me_rtol < 1.0)) fail("model_exchange/rtol", "must be in (0, 1)");
+    if (s.me_atol && !(*s.me_atol > 0.0)) fail("model_exchange/atol", "must be > 0");
+    if (s.me_max_steps && *s.me_max_steps < 1) fail("model_exchange/max_steps", "must be >= 1");
+  }
+  std::vector<XmlRpcValue> list(const std::string& key) {
+    std::vector<XmlRpcValue> out;
+    if (!root_.hasMember(key)) return out;
+    XmlRpcValue& l = root_[key];
+    if (l.getType() != XmlRpcValue::TypeArray) fail(key, "must be a list of entries");
+    for (int i = 0; i < l.size(); ++i) {
+      if (l[i].getType() != XmlRpcValue::TypeStruct) fail(key, "entry " + std::to_string(i) + " is not a mapping");
+      out.push_back(l[i]);
+    }
+    return out;
+  }
+  std::vector<MappingSpec::Link> links(const std::string& key) {
+    std::vector<MappingSpec::Link> out;
+    for (auto& e : list(key)) {
+      for (auto& kv : e)
+        if (kv.first != "field" && kv.first != "variable" && kv.first != "unit") fail(key + "/" + kv.first, "unknown key (field, variable, unit)");
+      MappingSpec::Link l;
+      l.field = str(e["field"], key + "/field");
+      l.variable = str(e["variable"], key + "/" + l.field + "/variable");
+      if (e.hasMember("unit")) l.unit = str(e["unit"], key + "/" + l.field + "/unit");
+      out.push_back(l);
+    }
+    return out;
+  }
+  std::string file_;
+  XmlRpcValue root_;
+};
+
+}  // namespace
+
+MappingSpec FmuParticipant::readSpec() const {
+  std::string file;
+  pnh_.param<std::string>("fmu_map_file", file, "");
+  XmlRpcValue root;
+  if (file.empty()) {
+    if (pnh_.hasParam("fmu_map")) throw InputError(configFile(), "fmu_map", "given without fmu_map_file");
+    return MappingSpec{};
+  }
+  if (!pnh_.getParam("fmu_map", root)) throw InputError(file, "", "empty mapping file");
+  return SpecReader(file, root).read();
+}
+
+MappingContext FmuParticipant::readContext() const {
+  MappingContext ctx;
+  ctx.participant = name();
+  const std::string own = std::string(cosim::kWiringNamespace) + "/" + name();
+  std::string decl_file = own + " (rosparam)";
+  nh_.getParam(own + "/file", decl_file);
+  std::map<std::string, std::string> pubs;
+  if (!nh_.getParam(own + "/publishes", pubs))
+    throw InputError(decl_file, "publishes", "missing: what participant " + name() + " publishes (its topics.yaml)");
+  for (const auto& [key, type] : pubs) ctx.publishes.emplace(key, PortFactory::layoutOf(type, decl_file, "publishes/" + key));
+  ros::NodeHandle nh = nh_;
+  ctx.produced = [nh](const std::string& producer, const std::string& key) -> std::optional<MessageLayout> {
+    std::string type;
+    if (!cosim::inScenario(nh, producer) ||
+        !nh.getParam(std::string(cosim::kWiringNamespace) + "/" + producer + "/publishes/" + key, type) ||
+        !PortFactory::known(type))
+      return std::nullopt;
+    return PortFactory::layoutOf(type, "", "");
+  };
+  XmlRpcValue sc;
+  if (nh_.getParam("/scenario", sc) && sc.getType() == XmlRpcValue::TypeStruct)
+    for (auto& kv : sc)
+      if (isNumber(kv.second)) ctx.scenario[kv.first] = number(kv.second);
+  return ctx;
+}
+
+void FmuParticipant::loadFmu(const std::string& out_dir) {
+  if (!pnh_.getParam("fmu_file", fmu_file_) || fmu_file_.empty())
+    throw InputError(configFile(), "fmu_file", "missing: the FMU this participant runs");
+  const std::string dir = out_dir + "/fmu";
+  ::mkdir(dir.c_str(), 0755);
+  // the interface type decides which binary functions are required: the mapping's, else the FMU's
+  const FmuArchive archive(fmu_file_);
+  const MappingSpec spec = readSpec();
+  const ModelDescription& md = archive.modelDescription();
+  map_ = resolveMapping(spec, md, readContext());
+  fmu_ = LoadedFmu::load(fmu_file_, dir + "/" + name(), map_.interface);
+}
+
+void FmuParticipant::checkStopTime() const {
+  double until_s = 0.0;
+  const auto& stop = fmu_->modelDescription().defaultExperiment().stop_time_s;
+  if (nh_.getParam("/stepper/until_s", until_s) && until_s > 0.0 && stop && *stop < until_s)
+    throw FmuError(fmu_file_, "DefaultExperiment stopTime " + std::to_string(*stop) +
+                                  " s is before the end of this run (until " + std::to_string(until_s) + " s)");
+}
+
+void FmuParticipant::onLog(const std::string& instance, fmi2Status status, const std::string& category,
+                           const std::string& message) {
+  const std::string line = "FMU " + fmu_file_ + " (" + instance + ", " + category + ", " + statusName(status) + "): " + message;
+  if (status == fmi2OK) {
+    ROS_INFO_STREAM(name() << ": " << line);
+  } else if (status == fmi2Warning || status == fmi2Discard) {
+    ++log_warnings_;
+    ROS_WARN_STREAM(name() << ": " << line);
+  } else {
+    ++log_errors_;
+    ROS_ERROR_STREAM(name() << ": " << line);
+  }
+  last_log_ = line;
+}
+
+void FmuParticipant::instantiate() {
+  auto sink = [this](const std::string& i, fmi2Status s, const std::string& c, const std::string& m) { onLog(i, s, c, m); };
+  if (map_.interface == InterfaceType::kCoSimulation) {
+    auto cs = std::make_unique<CsInstance>(fmu_, name(), sink);
+    cs_ = cs.get();
+    inst_ = std::move(cs);
+  } else {
+    auto me = std::make_unique<MeInstance>(fmu_, name(), sink, map_.me_rtol, map_.me_atol, map_.me_max_steps);
+    me_ = me.get();
+    inst_ = std::move(me);
+  }
+  for (const auto& b : map_.inputs) in_refs_.push_back(inst_->settable(b.variable, b.type));
+  for (const auto& b : map_.outputs) out_refs_.push_back(inst_->gettable(b.variable, b.type));
+  const auto& ex = fmu_->modelDescription().defaultExperiment();
+  const std::optional<double> tol = me_ ? std::optional<double>(map_.me_rtol) : ex.tolerance;
+  inst_->setupExperiment(tol, 0.0, ex.stop_time_s);
+  inst_->enterInitializationMode();
+  for (const auto& p : map_.parameters) {
+    const VariableRef r = inst_->settable(p.variable, p.type);
+    if (p.type == VarType::kReal) inst_->setReal(r, p.value_fmu);
+    else if (p.type == VarType::kInteger) inst_->setInteger(r, static_cast<int>(p.value_fmu));
+    else inst_->setBoolean(r, p.value_fmu != 0.0);
+  }
+  inst_->exitInitializationMode();
+}
+
+void FmuParticipant::makePorts() {
+  const std::string own = std::string(cosim::kWiringNamespace) + "/" + name() + "/publishes/";
+  for (const auto& key_layout : readContext().publishes) {
+    const std::string& key = key_layout.first;
+    std::string type;
+    nh_.getParam(own + key, type);
+    auto port = PortFactory::output(type, *this, cosim::outputTopic(nh_, name(), key, type));
+    const auto& fields = port->layout().fields();
+    for (std::size_t i = 0; i < fields.size(); ++i)
+      if (fields[i].kind == FieldKind::kFloat64Array) port->resize(i, map_.array_sizes.count(key) ? map_.array_sizes.at(key) : 0);
+    out_ports_.emplace(key, std::move(port));
+  }
+  for (const auto& f : map_.not_provided) out_ports_.at(f.key)->set(f.field, -1, f.value);
+  for (const auto& b : map_.outputs) {
+    const OutPort& port = *out_ports_.at(b.key);
+    if (port.layout().fields()[b.field].name == "mission_finished") mission_finished_output_ = static_cast<int>(out_port_of_.size());
+    out_port_of_.push_back(out_ports_.at(b.key).get());
+  }
+  for (const auto& b : map_.inputs) {
+    const std::string topic = cosim::topicName(b.participant, b.key);
+    auto it = in_ports_.find(topic);
+    if (it == in_ports_.end()) {
+      std::string type;
+      nh_.getParam(std::string(cosim::kWiringNamespace) + "/" + b.participant + "/publishes/" + b.key, type);
+      const std::string checked = cosim::inputTopic(nh_, b.participant, b.key, type, name());
+      it = in_ports_.emplace(topic, PortFactory::input(type, *this, checked)).first;
+    }
+    in_port_of_.push_back(it->second.get());
+  }
+}
+
+void FmuParticipant::writeResolved(const std::string& out_dir) const {
+  const std::string dir = out_dir + "/resolved_config";
+  ::mkdir(dir.c_str(), 0755);
+  const std::string path = dir + "/" + name() + "_fmu.csv";
+  std::ofstream f(path);
+  map_.writeCsv(f, fmu_file_);
+  if (!f) throw InputError(path, "", "cannot write the resolved FMU mapping");
+}
+
+void FmuParticipant::configure() {
+  std::string out_dir;
+  if (!nh_.getParam("/scenario/out_dir", out_dir) || out_dir.empty())
+    throw InputError("/scenario/out_dir (rosparam)", "out_dir", "missing: the FMU is extracted beside the bag");
+  loadFmu(out_dir);
+  checkStopTime();
+  instantiate();
+  makePorts();
+  writeResolved(out_dir);
+  readOutputs();
+}
+
+void FmuParticipant::readOutputs() {
+  for (std::size_t i = 0; i < map_.outputs.size(); ++i) {
+    const Binding& b = map_.outputs[i];
+    double v = 0.0;
+    if (b.type == VarType::kReal) v = b.fieldFromFmu(inst_->getReal(out_refs_[i]));
+    else if (b.type == VarType::kInteger) v = inst_->getInteger(out_refs_[i]);
+    else v = inst_->getBoolean(out_refs_[i]) ? 1.0 : 0.0;
+    out_port_of_[i]->set(b.field, b.element, v);
+    if (static_cast<int>(i) == mission_finished_output_) mission_finished_ = v != 0.0;
+  }
+}
+
+void FmuParticipant::step(const ros::Time& t, double dt_s) {
+  for (std::size_t i = 0; i < map_.inputs.size(); ++i) {
+    const Binding& b = map_.inputs[i];
+    const double v = in_port_of_[i]->get(t, b.field, b.element);
+    if (b.type == VarType::kReal) inst_->setReal(in_refs_[i], b.fmuFromField(v));
+    else if (b.type == VarType::kInteger) inst_->setInteger(in_refs_[i], static_cast<int>(std::lround(v)));
+    else inst_->setBoolean(in_refs_[i], v != 0.0);
+  }
+  if (cs_) cs_->doStep(dt_s);
+  else me_->doStep(dt_s);
+  readOutputs();
+}
+
+void FmuParticipant::publishOutputs(const ros::Time& t) {
+  for (auto& kv : out_ports_) kv.second->publish(t);
+}
+
+void FmuParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::core::KeyValue>& kv) {
+  kv.push_back({"fmu_file", fmu_file_});
+  kv.push_back({"fmu_interface", hbt::fmi::name(map_.interface)});
+  std::string np;
+  for (const auto& f : map_.not_provided) np += (np.empty() ? "" : ", ") + f.field_name;
+  kv.push_back({"fmu_not_provided", np.empty() ? "none" : np});
+  kv.push_back({"fmu_log_warnings", std::to_string(log_warnings_)});
+  kv.push_back({"fmu_log_errors", std::to_string(log_errors_)});
+  if (!last_log_.empty()) kv.push_back({"fmu_last_log", last_log_});
+  if (me_) {
+    kv.push_back({"fmu_time_events", std::to_string(me_->timeEvents())});
+    kv.push_back({"fmu_state_events", std::to_string(me_->stateEvents())});
+    kv.push_back({"fmu_step_events", std::to_string(me_->stepEvents())});
+  }
+}
+
+}  // namespace hbt::fmi
