@@ -33,6 +33,7 @@ import unittest
 
 from twin_tools.launch import run_util
 from twin_tools.paths import REPO
+from twin_tools.report.diagnostics import read_diagnostics
 
 LAUNCH = os.path.join(REPO, "test", "fmi", "scenario", "fmu_scenario.launch")
 FMU_SOURCES = os.path.join(REPO, "test", "fmi", "fmus")
@@ -99,18 +100,6 @@ def all_messages(bag_path):
         return [(t, m.header.stamp.to_nsec(), list(m.values)) for t, m, _ in b.read_messages()]
 
 
-def final_status(diag_bag, name):
-    """The key/values of participant `name`'s last /diagnostics status."""
-    import rosbag
-    last = None
-    with rosbag.Bag(diag_bag) as b:
-        for _, m, _ in b.read_messages(topics=["/diagnostics"]):
-            for s in m.status:
-                if s.name == name:
-                    last = {kv.key: kv.value for kv in s.values}
-    return last
-
-
 class FmuParticipant(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -149,7 +138,7 @@ class FmuParticipant(unittest.TestCase):
         self.assertLess(err_cs, 1e-9)   # RK4 on 0.01 s substeps inside doStep, tau = 450 s
         self.assertLess(err_me, 1e-6)   # CVODE rtol 1e-10 (decay_map.yaml), event location
         # the events happened: t_switch (time event), resets at 2.71, 3.39, 4.06, 4.73 s (state events)
-        diag = final_status(os.path.join(self.tmp, "cs_me_nodelets", "diagnostics.bag"), "decay")
+        diag = read_diagnostics(os.path.join(self.tmp, "cs_me_nodelets", "run.bag"))["decay"]["values"]
         self.assertEqual((diag["fmu_time_events"], diag["fmu_state_events"]), ("1", "4"), diag)
         self.assertEqual(diag["fmu_interface"], "ModelExchange")
         self.assertEqual(all_messages(bags["nodelets"]), all_messages(bags["nodes"]))

@@ -18,6 +18,7 @@ import unittest
 from twin_tools import units as twin_units
 from twin_tools.launch import run_util
 from twin_tools.paths import REPO
+from twin_tools.report.diagnostics import read_diagnostics
 
 EXAMPLE = os.path.join(REPO, "test", "example_participant")
 LAUNCH = os.path.join(EXAMPLE, "trip_computer.launch")
@@ -34,17 +35,6 @@ def messages(bag_path, topics):
         for topic, m, _ in b.read_messages(topics=topics):
             out[topic][m.header.stamp.to_nsec()] = m
     return out
-
-
-def final_status(diag_bag, name):
-    import rosbag
-    last = None
-    with rosbag.Bag(diag_bag) as b:
-        for _, m, _ in b.read_messages(topics=["/diagnostics"]):
-            for s in m.status:
-                if s.name == name:
-                    last = {kv.key: kv.value for kv in s.values}
-    return last
 
 
 class ExampleParticipant(unittest.TestCase):
@@ -108,7 +98,7 @@ class ExampleParticipant(unittest.TestCase):
 
     def test_its_warning_threshold_comes_from_its_yaml(self):
         for mode, (out, _) in self.runs.items():
-            final = final_status(os.path.join(out, "diagnostics.bag"), "trip_computer")
+            final = read_diagnostics(os.path.join(out, "run.bag"))["trip_computer"]["values"]
             self.assertIsNotNone(final, mode)
             self.assertIn("warning/long_idle/first_time_s", final, (mode, sorted(final)))
             # raised when the standstill idling it displays had lasted 5 s without a break
