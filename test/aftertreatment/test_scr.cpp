@@ -1,4 +1,4 @@
-// SCR NH3 storage (CVODE): mass balance, Temkin capacity, conversion versus temperature.
+// SCR NH3 storage (Runge-Kutta 5(4)): mass balance, Temkin capacity, conversion versus temperature.
 #include <gtest/gtest.h>
 
 #include <cmath>
