@@ -41,16 +41,25 @@ double ScrStorage::storedMol() const {
 }
 
 double ScrStorage::equilibriumCoverage(double T, double c) const {
-  // f(theta) = k_ads c (1 - theta) - k_des exp(-E (1 - alpha theta)/RT) theta, decreasing in theta.
+  // f(theta) = k_ads c (1 - theta) - k_des exp(-E (1 - alpha theta)/RT) theta: decreasing and
+  // concave on [0, 1], f(0) >= 0 >= f(1). Newton kept inside the bracket [lo, hi] (a step leaving
+  // it bisects instead); stops when the step is below 1e-15.
   const double kd = k_.k_des * std::exp(-k_.E_des / (kRu * T));
   const double b = k_.E_des * k_.alpha / (kRu * T);
-  double lo = 0.0, hi = 1.0;
-  for (int it = 0; it < 50; ++it) {
-    const double th = 0.5 * (lo + hi);
-    const double f = k_.k_ads * c * (1.0 - th) - kd * std::exp(b * th) * th;
+  const double ka = k_.k_ads * c;
+  double lo = 0.0, hi = 1.0, th = 0.0;
+  for (int it = 0; it < 100; ++it) {
+    const double e = kd * std::exp(b * th);
+    const double f = ka * (1.0 - th) - e * th;
+    if (f == 0.0) return th;
     (f > 0.0 ? lo : hi) = th;
+    const double df = -ka - e * (1.0 + b * th);  // < 0
+    double next = th - f / df;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - th) <= 1e-15) return next;
+    th = next;
   }
-  return 0.5 * (lo + hi);
+  return th;
 }
 
 void ScrStorage::rhs(const double* y, double* yd, double* qd, double* out) const {
