@@ -1,5 +1,6 @@
 // ats_replay: the aftertreatment alone (no ROS) on a recorded exhaust trace, for profiling and
-// the SCR integrator's convergence study. The trace (python -m twin_tools.bench.ats_trace BAG)
+// the SCR integrator's convergence study. The trace (PYTHONPATH=python python3 -m
+// twin_tools.bench.ats_trace RUN/run.bag TRACE)
 // holds, per 0.1 s sample of a run's bag, the engine's cumulative totals and point values
 // (ExhaustState) and the vehicle's distance, speed and ambient (VehicleToCooling); the program
 // feeds them through StepInputs exactly as the node does (aftertreatment_participant.cpp), so a
