@@ -2,10 +2,11 @@
 // temperatures and inlet flows with the explicit Runge-Kutta 5(4) of Dormand & Prince
 // (common/dormand_prince.hpp, error-controlled, restarted each step: nothing carries over the
 // jump of the inputs at the step boundary). Explicit, because the coverages are not stiff on the
-// 0.1 s step: they relax on time scales of seconds (the fastest, Temkin desorption of a loaded
-// store at the hottest Urban walls, ~10-20 1/s), so |lambda h| stays inside the method's stability
-// region (~3.3 on the real axis) and one 5th-order step per model step meets rtol 1e-8; a stiffer
-// state only makes the error control take smaller steps (at most max_steps).
+// 0.1 s step: they relax on time scales of seconds and longer (the fastest, Temkin desorption,
+// <= ~0.2 1/s at the coverages a store holds up to 350 degC), so |lambda h| stays far inside the
+// method's stability region (~3.3 on the real axis) and one 5th-order step per model step meets
+// rtol 1e-8; a stiffer state (a full store heated to 350 degC: ~70 1/s) only makes the error
+// control take smaller steps (at most max_steps).
 //
 // Sites: Omega [mol/m^3 of brick] NH3 sites, coverage theta_i per axial slice (volume V_s).
 // Rates per brick volume [mol/(m^3 s)] on slice i at its wall temperature T_i (Eley-Rideal
