@@ -275,7 +275,7 @@ void Aftertreatment::doseUrea(StepState& s) {
   }
 }
 
-// SCR: NH3 storage and NOx reduction (ScrStorage, CVODE), then its thermal step.
+// SCR: NH3 storage and NOx reduction (ScrStorage, Runge-Kutta 5(4)), then its thermal step.
 void Aftertreatment::stepScr(StepState& s) {
   Brick& scr = *bricks_[kSCR];
   ScrInlet si;

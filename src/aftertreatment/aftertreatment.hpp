@@ -34,7 +34,7 @@
 //     Urea = NH3/2 (CO(NH2)2 + H2O -> 2 NH3 + CO2); AdBlue = urea / 0.325. Evaporating and
 //     decomposing the AdBlue takes adblue_heat_J_kg from the gas (counted as (negative) reaction
 //     heat); the mass of the AdBlue is not added to the gas (< 0.3 % of the exhaust).
-//  4. SCR: ScrStorage (NH3 storage + standard/fast SCR + NH3 oxidation, CVODE).
+//  4. SCR: ScrStorage (NH3 storage + standard/fast SCR + NH3 oxidation, Runge-Kutta 5(4)).
 //  5. ASC: NH3 -> N2 (selectivity 1), X = 1 - exp(-k_asc(T_i) tau_i), 316.8 kJ/mol NH3; then
 //     the box's outlet chamber as one lumped wall (the tailpipe gas leaves it).
 //  6. Pressure: from the tailpipe (ambient) upstream: muffler + pipes K rho u_pipe^2/2, then each

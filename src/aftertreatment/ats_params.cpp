@@ -148,9 +148,9 @@ void AtsParams::declare(ParamSet& ps) {
   ps.add("nh3_fill_of_target", warm_nh3_fill, "-", 0.0, 1.5, "start:=warm: SCR NH3 store / dosing target");
 
   ps.setPrefix("numerics/");
-  ps.add("rtol", rtol, "-", 1e-12, 1e-3, "CVODE relative tolerance");
-  ps.add("atol_theta", atol_theta, "-", 1e-15, 1e-4, "CVODE absolute tolerance on coverage");
-  ps.add("max_steps", max_steps, "-", 10, 1000000, "CVODE steps per model step");
+  ps.add("rtol", rtol, "-", 1e-12, 1e-3, "relative tolerance of the SCR coverages (Runge-Kutta 5(4))");
+  ps.add("atol_theta", atol_theta, "-", 1e-15, 1e-4, "absolute tolerance of the SCR coverages");
+  ps.add("max_steps", max_steps, "-", 10, 1000000, "Runge-Kutta steps per model step (at most)");
   ps.setPrefix("");
 }
 

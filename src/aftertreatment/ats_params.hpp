@@ -138,7 +138,7 @@ struct AtsParams {
   double warm_brick_T_K = 523.15;          ///< every brick (substrate, washcoat, can) [K]
   double warm_nh3_fill = 0.9;              ///< SCR NH3 store / the dosing's storage target [-]
 
-  // Numerics (CVODE for the NH3 storage).
+  // Numerics (explicit Runge-Kutta 5(4) for the NH3 storage).
   double rtol = 1e-8;
   double atol_theta = 1e-10;
   int max_steps = 5000;

@@ -1,13 +1,11 @@
 #include "aftertreatment/scr_storage.hpp"
 
-#include <nvector/nvector_serial.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "aftertreatment/gas.hpp"
-#include "common/cvode_solver.hpp"
+#include "common/dormand_prince.hpp"
 #include "common/errors.hpp"
 
 namespace hbt::aftertreatment {
@@ -17,32 +15,24 @@ constexpr double kDH_std = 407.1e3;   // J per mol NO (standard SCR)
 constexpr double kDH_fast = 757.0e3;  // J per fast-SCR event
 constexpr double kDH_no2 = 455.5e3;   // J per mol NO2 (NO2 SCR)
 constexpr double kDH_ox = 316.8e3;    // J per mol NH3 oxidised
-int rhsCallback(realtype, N_Vector y, N_Vector yd, void* ud) {
-  static_cast<const ScrStorage*>(ud)->rhs(N_VGetArrayPointer(y), N_VGetArrayPointer(yd), nullptr);
-  return 0;
-}
-int quadCallback(realtype, N_Vector y, N_Vector qd, void* ud) {
-  static_cast<const ScrStorage*>(ud)->rhs(N_VGetArrayPointer(y), nullptr, N_VGetArrayPointer(qd));
-  return 0;
-}
 }  // namespace
 
 ScrStorage::ScrStorage(const ScrKinetics& k, int slices, double Vs, double rtol, double atol_theta,
                        int max_steps)
     : k_(k), n_(slices), Vs_(Vs), rtol_(rtol), atol_theta_(atol_theta),
       max_steps_(max_steps), theta_(slices, 0.0), Vdot_(slices), kd_(slices), bT_(slices),
-      kstd_(slices), kfast_(slices), kno2_(slices), kox_(slices), scratch_(slices) {
-  cvode_ = std::make_unique<CvodeSolver>("aftertreatment SCR", n_, &rhsCallback, this, rtol_,
-                                         std::vector<double>(n_, atol_theta_), max_steps_);
-  std::vector<double> atolQ(n_ + 5);
-  for (int i = 0; i < 5; ++i) atolQ[i] = 1e-14;       // mol
-  for (int i = 5; i < n_ + 5; ++i) atolQ[i] = 1e-8;   // J
-  cvode_->addQuadratures(n_ + 5, &quadCallback, atolQ);
+      kstd_(slices), kfast_(slices), kno2_(slices), kox_(slices), scratch_(slices),
+      q_(slices + 5, 0.0) {
+  rk_ = std::make_unique<DormandPrince>("aftertreatment SCR", n_, n_ + 5, rtol_,
+                                        std::vector<double>(n_, atol_theta_), max_steps_);
 }
 
 ScrStorage::~ScrStorage() = default;
 
-void ScrStorage::setCoverage(double theta) { std::fill(theta_.begin(), theta_.end(), theta); }
+void ScrStorage::setCoverage(double theta) {
+  std::fill(theta_.begin(), theta_.end(), theta);
+  rk_->reset();
+}
 
 double ScrStorage::storedMol() const {
   double s = 0.0;
@@ -51,16 +41,25 @@ double ScrStorage::storedMol() const {
 }
 
 double ScrStorage::equilibriumCoverage(double T, double c) const {
-  // f(theta) = k_ads c (1 - theta) - k_des exp(-E (1 - alpha theta)/RT) theta, decreasing in theta.
+  // f(theta) = k_ads c (1 - theta) - k_des exp(-E (1 - alpha theta)/RT) theta: decreasing and
+  // concave on [0, 1], f(0) >= 0 >= f(1). Newton kept inside the bracket [lo, hi] (a step leaving
+  // it bisects instead); stops when the step is below 1e-15.
   const double kd = k_.k_des * std::exp(-k_.E_des / (kRu * T));
   const double b = k_.E_des * k_.alpha / (kRu * T);
-  double lo = 0.0, hi = 1.0;
-  for (int it = 0; it < 50; ++it) {
-    const double th = 0.5 * (lo + hi);
-    const double f = k_.k_ads * c * (1.0 - th) - kd * std::exp(b * th) * th;
+  const double ka = k_.k_ads * c;
+  double lo = 0.0, hi = 1.0, th = 0.0;
+  for (int it = 0; it < 100; ++it) {
+    const double e = kd * std::exp(b * th);
+    const double f = ka * (1.0 - th) - e * th;
+    if (f == 0.0) return th;
     (f > 0.0 ? lo : hi) = th;
+    const double df = -ka - e * (1.0 + b * th);  // < 0
+    double next = th - f / df;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - th) <= 1e-15) return next;
+    th = next;
   }
-  return 0.5 * (lo + hi);
+  return th;
 }
 
 void ScrStorage::rhs(const double* y, double* yd, double* qd, double* out) const {
@@ -130,19 +129,16 @@ ScrStepResult ScrStorage::step(double dt, const ScrInlet& in, const double* T_K,
     kno2_[i] = k_.k_no2_ref * std::exp(-k_.E_no2 / kRu * (1.0 / T - 1.0 / k_.T_ref));
     kox_[i] = k_.k_ox_ref * std::exp(-k_.E_ox / kRu * (1.0 / T - 1.0 / k_.T_ox_ref));
   }
-  double* y = cvode_->y();
-  double* q = cvode_->quadratures();
-  for (int i = 0; i < n_; ++i) y[i] = theta_[i];
-  for (int i = 0; i < n_ + 5; ++i) q[i] = 0.0;
-  cvode_->reinit();
-  cvode_->setStopTime(dt);
-  steps_ += cvode_->advance(dt, "NH3 coverage");
+  double* q = q_.data();
+  std::fill(q_.begin(), q_.end(), 0.0);
+  steps_ += rk_->integrate([this](const double* y, double* yd, double* qd) { rhs(y, yd, qd); }, dt,
+                           theta_.data(), q, "NH3 coverage");
+  const double* y = theta_.data();
   ScrStepResult r;
   for (int i = 0; i < n_; ++i) {
     if (!std::isfinite(y[i]) || y[i] < -1e-6 || y[i] > 1.0 + 1e-6)
       throw ModelDivergence("aftertreatment SCR slice " + std::to_string(i), "NH3 coverage",
                             "non-physical value " + std::to_string(y[i]));
-    theta_[i] = y[i];
     if (heat_J) heat_J[i] = q[5 + i];
   }
   r.nh3_slip_mol = q[0];

@@ -1,4 +1,4 @@
-// SCR NH3 storage (CVODE): mass balance, Temkin capacity, conversion versus temperature.
+// SCR NH3 storage (Runge-Kutta 5(4)): mass balance, Temkin capacity, conversion versus temperature.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,6 +68,17 @@ TEST(ScrStorage, StorageCapacityFallsWithTemperature) {
     EXPECT_LT(th, last) << T;
     last = th;
   }
+  // the root satisfies the Temkin balance k_ads c (1 - theta) = k_des e^(-E (1 - alpha theta)/RT) theta
+  const ScrKinetics& k = s.kinetics();
+  for (double T : {423.0, 523.0, 623.0, 723.0})
+    for (double cc : {0.0, 1e-3 * c, c, 10.0 * c}) {
+      const double th = s.equilibriumCoverage(T, cc);
+      const double ads = k.k_ads * cc * (1.0 - th);
+      const double des = k.k_des * std::exp(-k.E_des * (1.0 - k.alpha * th) / (kRu * T)) * th;
+      EXPECT_NEAR(ads, des, 1e-12 * (ads + des) + 1e-300) << T << " K, c " << cc;
+      EXPECT_GE(th, 0.0);
+      EXPECT_LT(th, 1.0);
+    }
   EXPECT_GT(s.equilibriumCoverage(473.15, c), 0.4);
   EXPECT_LT(s.equilibriumCoverage(623.15, c), 0.2);
   EXPECT_GT(s.equilibriumCoverage(523.0, 2 * c), s.equilibriumCoverage(523.0, c));

@@ -44,9 +44,9 @@ void AftertreatmentParticipant::diagnosticValues(cosim::core::Nanos, std::vector
   using cosim::core::formatNumber;
   const AtsOutputs& o = model_->outputs();
   const long n = model_->scr().solverSteps();
-  kv.push_back({"cvode_steps_window", std::to_string(n - cvode_steps_at_status_)});
-  kv.push_back({"cvode_steps_total", std::to_string(n)});
-  cvode_steps_at_status_ = n;
+  kv.push_back({"scr_solver_steps_window", std::to_string(n - scr_steps_at_status_)});
+  kv.push_back({"scr_solver_steps_total", std::to_string(n)});
+  scr_steps_at_status_ = n;
   kv.push_back({"doc_temperature_c", formatNumber(units::kToCelsius(o.brick_T_K[kDOC]))});
   kv.push_back({"scr_temperature_c", formatNumber(units::kToCelsius(o.brick_T_K[kSCR]))});
   kv.push_back({"light_off", o.light_off ? "true" : "false"});

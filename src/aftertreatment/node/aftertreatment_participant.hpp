@@ -18,7 +18,7 @@
 // the last P from their cumulative totals (../step_inputs.hpp).
 // Diagnostics (docs/diagnostics.md): warning ats_below_light_off (the SCR not lit off --
 // AftertreatmentState.light_off false -- for diagnostics/light_off_grace_s of config/aftertreatment.yaml
-// without a break); key/values the CVODE steps of the SCR storage (in the window and in
+// without a break); key/values the Runge-Kutta steps of the SCR storage (in the window and in
 // all), brick temperatures, conversion.
 #pragma once
 #include <hybrid_bus_twin/AftertreatmentState.h>
@@ -57,7 +57,7 @@ class AftertreatmentParticipant : public cosim::Participant {
   cosim::Output state_pub_;
   double ambient_T_K_ = 298.15;
   double ambient_p_Pa_ = units::kStandardAtmosphere_Pa;  // tailpipe pressure, /scenario/ambient_pressure_pa
-  long cvode_steps_at_status_ = 0;  // SCR solver steps counted at the last status
+  long scr_steps_at_status_ = 0;  // SCR solver steps counted at the last status
   cosim::core::Warning* below_light_off_ = nullptr;
   StepInputs inputs_;  // step means from the producers' cumulative totals
 };
