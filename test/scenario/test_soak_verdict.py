@@ -52,6 +52,14 @@ class SoakVerdict(unittest.TestCase):
         self.assertFalse(flat, lines)
         self.assertIn("GROWS", lines[0])
 
+    def test_early_and_late_come_from_the_managers_life(self):
+        # the manager lives from 10 s to 50 s of a 200 s `twin run` (then the report is written)
+        samples = [(10.0 + i, 30.0 + i, 10.0 + i) for i in range(41)]
+        steady = soak.steady_samples(samples)
+        self.assertEqual(steady[0], (38.0, 18.0))   # first sample at >= 10 + 0.2 * 40 = 18 s
+        self.assertEqual(steady[-1], (70.0, 50.0))  # last sample
+        self.assertEqual(soak.steady_samples([]), [])
+
 
 if __name__ == "__main__":
     unittest.main()

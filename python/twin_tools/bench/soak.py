@@ -9,8 +9,9 @@ Per run: status, wall time, whether a timeout ended it (a participant starved of
 dead: "did not answer", "no participant progressed", "start-up timed out"), whether every number
 of its summary.json is finite, the manager's RSS and its anonymous part (RssAnon: heap, stacks,
 mapped memory the process itself allocated; RSS adds file-backed pages of the shared libraries,
-which come and go with the page cache) at the first sample after a fifth of the run's wall time
-and at the last sample before its end, the peak RSS (VmHWM), and the high-water mark of the bag
+which come and go with the page cache) at the first sample after a fifth of the manager's sampled
+life (the simulation; `twin run` then writes the report, which can take longer than the mission
+on a loaded machine) and at its last sample, the peak RSS (VmHWM), and the high-water mark of the bag
 writer's queue (the recorder's final diagnostics, bag_queue_high_water_kib: the most memory the
 messages waiting for run.bag's writer thread held at once; bounded by its budget,
 src/cosim/bag_writer.hpp).
@@ -78,6 +79,15 @@ def fitted_rise(values):
     return slope * (n - 1)
 
 
+def steady_samples(samples):
+    """[(rss, anon)] of the samples [(t, rss, anon)] from a fifth of the sampled span on (the
+    manager's start-up left out), in order; [] for no samples."""
+    if not samples:
+        return []
+    t_first, t_last = samples[0][0], samples[-1][0]
+    return [(rss, anon) for t, rss, anon in samples if t >= t_first + 0.2 * (t_last - t_first)]
+
+
 def finite_numbers(obj):
     """True if every number in a JSON value is finite."""
     if isinstance(obj, dict):
@@ -127,7 +137,7 @@ def run_one(index, scenario, ambient, payload, root, until):
         row["summary_finite"] = None
     row["timeout"] = any(w in row.get("message", "") for w in TIMEOUT_WORDS)
     row["bag_queue_high_water_mib"] = bag_queue_high_water_mib(out)
-    steady = [(rss, anon) for t, rss, anon in samples if t >= 0.2 * wall]
+    steady = steady_samples(samples)
     row["rss_early_mib"], row["anon_early_mib"] = steady[0] if steady else (None, None)
     row["rss_late_mib"], row["anon_late_mib"] = steady[-1] if steady else (None, None)
     return row
@@ -190,7 +200,7 @@ def bench_soak(a):
           "time (nodelets), each on its own master. RSS: the nodelet manager's resident memory [MiB] (one "
           "process: every participant, the stepper, the recorder) and its anonymous part RssAnon (what the process "
           "allocated itself; RSS adds shared-library pages that come and go with the page cache), at the first "
-          "sample after a fifth of the run (early) and at the last sample (late); peak = VmHWM; bag queue "
+          "sample after a fifth of the manager's sampled life (early) and at its last sample (late); peak = VmHWM; bag queue "
           "high-water: the most the messages waiting for run.bag's writer thread held at once (the recorder's "
           "diagnostics; budget 4 MiB). Total wall time %.0f s."
           % ("first %g s" % a.until if a.until else "whole Urban cycle", ", ".join(map(str, SOAK_AMBIENTS_C)),
