@@ -3,7 +3,7 @@
 // circuit whose radiator sits in front of the HT radiator in the same air stream. ROS-free,
 // deterministic, no allocation in step().
 //
-// States: T_m metal+oil [K]; HT coolant in three well-mixed volumes: T_c engine loop (jacket,
+// States: T_m engine metal, T_o engine oil [K]; HT coolant in three well-mixed volumes: T_c engine loop (jacket,
 // pump, thermostat housing, bypass; its temperature is the engine outlet, "the" HT coolant
 // temperature of the thermostat, fan, heater valve, warm-up time and EMS), T_r radiator volume,
 // T_v convector volume (heater loop); T_l LT coolant [K]; T_w thermostat wax [K], T_p
@@ -11,14 +11,18 @@
 // speed (clutch output, before the input-speed cap) [rad/s]; the heater valve (open/shut).
 //
 // Thermal network (equations in coolant_network.hpp; Q̇ in W, C in J/K, G, W in W/K, T_a ambient):
-//   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_s (T_m - T_a) - Q̇_em   (Q̇_em: heat conducted into
-//                 the P1 e-machine's housing and rotor, which its LT heat then carries)
-//   C_c dT_c/dt = G_mc (T_m - T_c) - W_r (T_c - T_r) - W_v (T_c - T_v) + Q̇_aux + Q̇_gb
+//   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_om (T_m - T_o) - G_s (T_m - T_a) - Q̇_em
+//                 (Q̇_eng: the engine's heat into its metal, combustion heat through the walls and
+//                 the ring and skirt friction on the liners; Q̇_em: heat conducted into the P1
+//                 e-machine's housing and rotor, which its LT heat then carries)
+//   C_o dT_o/dt = Q̇_oil + G_om (T_m - T_o) - G_oc (T_o - T_c)   (Q̇_oil: the engine's friction heat
+//                 carried by the oil, bearings and valve train; G_oc: the engine's oil cooler)
+//   C_c dT_c/dt = G_mc (T_m - T_c) + G_oc (T_o - T_c) - W_r (T_c - T_r) - W_v (T_c - T_v) + Q̇_aux + Q̇_gb
 //                 (Q̇_aux: fuel-fired heater; Q̇_gb: the automatic gearbox's oil-to-coolant cooler)
 //   C_r dT_r/dt = W_r (T_c - T_r) - Q̇_rad,HT
 //   C_v dT_v/dt = W_v (T_c - T_v) - Q̇_heater
 //   C_l dT_l/dt = Q̇_LT,in - Q̇_rad,LT
-//   C_m = m_metal c_metal + m_oil c_oil,  C_c, C_r, C_v = ρ V c of the engine loop, radiator and
+//   C_m = m_metal c_metal,  C_o = m_oil c_oil,  C_c, C_r, C_v = ρ V c of the engine loop, radiator and
 //   convector volumes,  C_l = ρ V_lt c + C_components
 //   W_r = ṁ_rad c (thermostat),  W_v = ṁ_heater c (heater valve open, heating wanted; else 0)
 //   Q̇_rad,LT = G_LT (T_l - T_a),                       G = ε C_min of the radiator (radiator.hpp)
@@ -60,7 +64,7 @@
 //
 // Integration: per substep (<= max_substep_s) the flows, ε and the heater valve are frozen at
 // the start of the substep (the heater's min() on the branch the new convector temperature
-// picks) and the linear 5-node network is advanced by backward Euler (implicit,
+// picks) and the linear 6-node network is advanced by backward Euler (implicit,
 // unconditionally stable). The cumulative energies book exactly the fluxes of that update, so
 // heat in - heat out - Δstored = 0 to round-off. Lags (wax, clutch, LT pump) use the exact
 // exponential update with the new coolant temperature.
@@ -75,7 +79,8 @@
 namespace hbt::cooling {
 
 struct CoolingInputs {
-  double engine_heat_W = 0.0;          // heat rejected by the engine to the HT circuit [W]
+  double engine_heat_W = 0.0;          // heat the engine rejects into its metal [W]
+  double engine_oil_heat_W = 0.0;      // heat the engine's friction puts into its oil [W]
   double pump_speed_rad_s = 0.0;       // HT pump shaft speed = crank speed (1:1) [rad/s]
   double vehicle_speed_m_s = 0.0;      // for ram air [m/s]
   double ambient_T_K = 298.15;         // [K]
@@ -97,6 +102,8 @@ struct CoolingInputs {
 struct CoolingOutputs {
   double coolant_ht_T_K = 0.0;         // engine loop = engine outlet [K]
   double metal_T_K = 0.0, coolant_lt_T_K = 0.0;
+  double oil_T_K = 0.0;                // engine oil (sump) [K]
+  double oil_cooler_heat_W = 0.0;      // oil -> engine-loop coolant through the oil cooler [W]
   double radiator_coolant_T_K = 0.0;   // radiator volume (= its return to the engine) [K]
   double convector_coolant_T_K = 0.0;  // convector volume (heater loop) [K]
   bool heater_valve_open = false;      // heater loop in the circuit (heating wanted, coolant warm)
@@ -121,10 +128,12 @@ struct CoolingOutputs {
   double fan_energy_J = 0.0, fan_drive_energy_J = 0.0, pump_energy_J = 0.0, lt_pump_energy_J = 0.0;
   double electric_pump_energy_J = 0.0; // 24 V heater circulation pump, electric
   double engine_heat_J = 0.0, lt_heat_J = 0.0, aux_heater_J = 0.0;
+  double engine_oil_heat_J = 0.0;      // the engine's friction heat into its oil
+  double oil_cooler_J = 0.0;           // oil -> engine-loop coolant through the oil cooler
   double em_engine_heat_W = 0.0, em_engine_heat_J = 0.0;  // engine metal -> e-machine [W], [J]
   double gearbox_cooler_J = 0.0;       // the AT's oil cooler into the HT engine loop [J]
   double radiator_ht_J = 0.0, radiator_lt_J = 0.0, heater_J = 0.0, surface_loss_J = 0.0;
-  double stored_change_J = 0.0;        // Σ C (T - T_0) over metal, the three HT volumes and LT
+  double stored_change_J = 0.0;        // Σ C (T - T_0) over metal, oil, the three HT volumes and LT
   double energy_residual_J = 0.0;      // in - out - stored change (ideally 0)
   double warmup_time_s = -1.0;         // first time T_c >= opening start (-1 before)
   double time_s = 0.0;
@@ -137,18 +146,22 @@ class CoolingModel {
   /// Cold start: every temperature = ambient_T_K, clutches at rest (e = 0, LT pump idle),
   /// thermostat closed, cumulatives 0.
   void reset(double ambient_T_K);
-  /// Restarts warm: metal + oil, HT (all three volumes) and LT coolant at the given temperatures [K] (the wax and its
+  /// Restarts warm: metal, oil, HT (all three volumes) and LT coolant at the given temperatures [K] (the wax and its
   /// play on the heating branch at the coolant, the heater valve as the coolant sets it), fan
   /// clutch released; the stored energy and warm-up time count from this state (warm-up time 0
   /// when the coolant is already at the thermostat's opening).
-  void reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K);
+  void reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K, double oil_T_K);
+  /// The same with the oil at the metal's temperature.
+  void reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K) {
+    reset(ambient_T_K, metal_T_K, coolant_ht_T_K, coolant_lt_T_K, metal_T_K);
+  }
   /// Advances by dt_s with inputs held constant. Throws ModelDivergence naming the quantity.
   void step(double dt_s, const CoolingInputs& in);
   const CoolingOutputs& outputs() const { return out_; }
   const CoolingParams& params() const { return p_; }
   const Radiator& htRadiator() const { return rad_ht_; }
   const Radiator& ltRadiator() const { return rad_lt_; }
-  /// Heat capacities of the network's nodes [J/K] (metal, engine loop, radiator, convector, LT).
+  /// Heat capacities of the network's nodes [J/K] (metal, engine loop, radiator, convector, LT, oil).
   const NetworkCapacities& capacities() const { return network_.capacities(); }
 
   /// Air path alone: volume flow [m^3/s], fan pressure rise [Pa] and signed fan power [W] at fan

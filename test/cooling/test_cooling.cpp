@@ -231,13 +231,16 @@ TEST(CoolingModel, ClosedThermostatWarmupIsExactLumpedHeating) {
   const double Ta = celsiusToK(25.0);  // above the heater balance point: no heater
   m.reset(Ta);
   CoolingInputs in;
-  in.engine_heat_W = 50e3;
+  in.engine_heat_W = 45e3;      // into the metal
+  in.engine_oil_heat_W = 5e3;   // friction heat into the oil
   in.pump_speed_rad_s = rpmToRadps(1200.0);
   in.ambient_T_K = Ta;
   // ΣmC by hand from the parameters. Thermostat and heater valve shut (no heating at 25 degC):
   // only the engine loop's coolant takes part, as if the radiator and convector volumes did not
   // exist.
-  const double Cm = p.ht.metal_mass_kg * p.ht.metal_cp_J_kgK + p.ht.oil_mass_kg * p.ht.oil_cp_J_kgK;
+  const double Cm = p.ht.metal_mass_kg * p.ht.metal_cp_J_kgK;
+  const double Co = p.ht.oil_mass_kg * p.ht.oil_cp_J_kgK;
+  const double Q = in.engine_heat_W + in.engine_oil_heat_W;
   const double Cc = p.ht.engine_loop_volume_m3 * p.ht.coolant_density_kg_m3 * p.ht.coolant_cp_J_kgK;
   const double dt = 0.01;
   int k = 0;
@@ -248,14 +251,19 @@ TEST(CoolingModel, ClosedThermostatWarmupIsExactLumpedHeating) {
   }
   const CoolingOutputs& o = m.outputs();
   const double t = k * dt;
-  const double mean_rise = (Cm * (o.metal_T_K - Ta) + Cc * (o.coolant_ht_T_K - Ta)) / (Cm + Cc);
-  EXPECT_NEAR(mean_rise, in.engine_heat_W * t / (Cm + Cc), 1e-9 * mean_rise);
-  // Metal leads the coolant by C_c r/G_mc once the initial transient (τ ~ 20 s) is over.
-  const double r = in.engine_heat_W / (Cm + Cc);
-  EXPECT_NEAR(o.metal_T_K - o.coolant_ht_T_K, Cc * r / p.ht.metal_to_coolant_UA_W_K, 1e-3);
-  // Warm-up time: T_c(t) = T_a + r t - C_m C_c r/(ΣC G_mc) -> t_w.
+  const double sumC = Cm + Co + Cc;
+  const double mean_rise = (Cm * (o.metal_T_K - Ta) + Co * (o.oil_T_K - Ta) + Cc * (o.coolant_ht_T_K - Ta)) / sumC;
+  EXPECT_NEAR(mean_rise, Q * t / sumC, 1e-9 * mean_rise);
+  // Metal and oil lead the coolant by the ramp offsets (support.hpp) once the initial
+  // transients are over (the oil's, τ ~ 40 s, leaves ~5 mK after 250 s).
+  const double r = Q / sumC;
+  const test::RampOffsets lead = test::rampOffsets(p.ht.metal_to_coolant_UA_W_K, p.ht.oil_to_metal_UA_W_K,
+                                                   p.ht.oil_cooler_UA_W_K, Co, in.engine_oil_heat_W, r, Cc * r);
+  EXPECT_NEAR(o.metal_T_K - o.coolant_ht_T_K, lead.metal_K, 1e-3);
+  EXPECT_NEAR(o.oil_T_K - o.coolant_ht_T_K, lead.oil_K, 1e-2);
+  // Warm-up time: T_c(t) = T_a + r t - (C_m a + C_o b)/ΣC -> t_w.
   for (; o.warmup_time_s < 0.0 && k < 100000; ++k) m.step(dt, in);
-  const double t_w = (p.thermostat.opening_start_K - Ta) / r + Cm * Cc / ((Cm + Cc) * p.ht.metal_to_coolant_UA_W_K);
+  const double t_w = (p.thermostat.opening_start_K - Ta) / r + (Cm * lead.metal_K + Co * lead.oil_K) / (sumC * r);
   EXPECT_NEAR(o.warmup_time_s, t_w, 0.05);
   EXPECT_EQ(o.radiator_coolant_T_K, Ta);  // the shut-off volumes kept their temperature
   EXPECT_EQ(o.convector_coolant_T_K, Ta);
@@ -274,6 +282,7 @@ TEST(CoolingModel, EnergyBalanceOverColdTransientWithHeaterAndLt) {
   for (int k = 0; k < 80000; ++k) {  // 4000 s
     const double t = k * dt;
     in.engine_heat_W = 40e3 + 30e3 * std::sin(2 * units::kPi * t / 120.0);
+    in.engine_oil_heat_W = 4e3 + 3e3 * std::sin(2 * units::kPi * t / 50.0);
     in.pump_speed_rad_s = rpmToRadps(900.0 + 500.0 * std::sin(2 * units::kPi * t / 60.0));
     in.vehicle_speed_m_s = 8.0 + 8.0 * std::sin(2 * units::kPi * t / 90.0);
     in.lt_heat_W = 3e3 * (1.0 + std::sin(2 * units::kPi * t / 45.0));
@@ -281,7 +290,7 @@ TEST(CoolingModel, EnergyBalanceOverColdTransientWithHeaterAndLt) {
     in.gearbox_cooler_heat_W = t > 2000.0 ? 2.5e3 * (0.5 + 0.5 * std::sin(2 * units::kPi * t / 33.0)) : 0.0;
     m.step(dt, in);
     const CoolingOutputs& o = m.outputs();
-    e_in += (in.engine_heat_W + in.lt_heat_W - in.em_engine_heat_W + in.gearbox_cooler_heat_W) * dt;
+    e_in += (in.engine_heat_W + in.engine_oil_heat_W + in.lt_heat_W - in.em_engine_heat_W + in.gearbox_cooler_heat_W) * dt;
     e_out += (o.radiator_ht_heat_W + o.radiator_lt_heat_W + o.heater_heat_W + o.surface_loss_W) * dt;
     heater_max = std::max(heater_max, o.heater_heat_W);
   }
@@ -289,10 +298,11 @@ TEST(CoolingModel, EnergyBalanceOverColdTransientWithHeaterAndLt) {
   const NetworkCapacities& C = m.capacities();
   const double stored = C.metal * (o.metal_T_K - Ta) + C.engine_loop * (o.coolant_ht_T_K - Ta) +
                         C.radiator * (o.radiator_coolant_T_K - Ta) + C.convector * (o.convector_coolant_T_K - Ta) +
-                        C.lt * (o.coolant_lt_T_K - Ta);
+                        C.lt * (o.coolant_lt_T_K - Ta) + C.oil * (o.oil_T_K - Ta);
   EXPECT_NEAR(e_in - e_out - stored, 0.0, 1e-6 * e_in);
   EXPECT_NEAR(o.energy_residual_J, 0.0, 1e-6 * e_in);
-  EXPECT_NEAR(o.engine_heat_J + o.lt_heat_J - o.em_engine_heat_J + o.gearbox_cooler_J, e_in, 1e-9 * e_in);
+  EXPECT_NEAR(o.engine_heat_J + o.engine_oil_heat_J + o.lt_heat_J - o.em_engine_heat_J + o.gearbox_cooler_J, e_in,
+              1e-9 * e_in);
   EXPECT_GT(o.em_engine_heat_J, 0.0);
   EXPECT_GT(o.gearbox_cooler_J, 0.0);
   // Heater at 0 degC: demand UA (15 - 0) K = 12 kW once the coolant is warm.
