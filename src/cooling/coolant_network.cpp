@@ -36,7 +36,7 @@ NetworkFluxes CoolantNetwork::step(double h, double T_a, const NetworkCoefficien
   // convector volume: W_v (θ_c - θ_v) - q_h - g_h θ_v
   A(kConvector, kConvector) = C_.convector / h + k.W_heater + k.g_heater;
   A(kConvector, kEngine) = -k.W_heater;
-  b(kConvector) = C_.convector / h * (T.convector - T_a) - k.q_heater;
+  b(kConvector) = C_.convector / h * (T.convector - T_a) - k.q_heater + k.Q_loop;
   // LT
   A(kLt, kLt) = C_.lt / h + k.G_lt;
   b(kLt) = C_.lt / h * (T.lt - T_a) + k.Q_lt;

@@ -15,7 +15,7 @@
 //   C_o dθ_o/dt = Q̇_oil + G_om (θ_m - θ_o) - G_oc (θ_o - θ_c)
 //   C_c dθ_c/dt = G_mc (θ_m - θ_c) + G_oc (θ_o - θ_c) - W_r (θ_c - θ_r) - W_v (θ_c - θ_v) + Q̇_aux
 //   C_r dθ_r/dt = W_r (θ_c - θ_r) - Q̇_rad,HT,     Q̇_rad,HT = G_HT (θ_c - p θ_l)
-//   C_v dθ_v/dt = W_v (θ_c - θ_v) - Q̇_h,          Q̇_h = q_h + g_h θ_v
+//   C_v dθ_v/dt = W_v (θ_c - θ_v) - Q̇_h + Q̇_loop,  Q̇_h = q_h + g_h θ_v
 //   C_l dθ_l/dt = Q̇_LT - Q̇_rad,LT,                Q̇_rad,LT = G_LT θ_l
 // W_r = ṁ_rad c_p and W_v = ṁ_heater c_p are the capacity rates of the coolant exchanged with
 // the engine loop (well-mixed nodes: what leaves a node leaves at its temperature). The radiator
@@ -25,8 +25,8 @@
 // W_r, the radiator volume never falls below the air inlet temperature. The convectors are
 // driven by the mean temperature of the water they hold (θ_v): their heat leaves the convector
 // volume, also when the loop does not circulate (stagnant water cooled by the convector fans).
-// Q̇_aux: heat into the engine loop (the fuel-fired water heater, plumbed in the engine-side
-// circuit, and the automatic gearbox's oil cooler). Q̇_eng: the engine's
+// Q̇_aux: heat into the engine loop (the automatic gearbox's oil cooler). Q̇_loop: heat into the
+// heater loop (the fuel-fired water heater, in the heating circuit ahead of the convectors). Q̇_eng: the engine's
 // heat into its metal (combustion heat through the walls, the friction of the piston rings and
 // skirts on the liners); Q̇_oil: the friction heat the oil carries away from the bearings and the
 // valve train. The oil gives its heat to the coolant through the engine's oil cooler (plate
@@ -35,7 +35,7 @@
 //
 // Backward Euler over h: (C/h + K) θ_new = C/h θ_old + sources, a 6x6 linear system
 // (Eigen, partial-pivot LU). The fluxes are evaluated with θ_new, so that
-//   h (Q̇_eng + Q̇_oil + Q̇_aux + Q̇_LT - Q̇_rad,HT - Q̇_rad,LT - Q̇_h - G_s θ_m) = Σ C (θ_new - θ_old)
+//   h (Q̇_eng + Q̇_oil + Q̇_aux + Q̇_loop + Q̇_LT - Q̇_rad,HT - Q̇_rad,LT - Q̇_h - G_s θ_m) = Σ C (θ_new - θ_old)
 // holds to round-off (the exchange terms W, G_mc, G_om and G_oc cancel pairwise).
 #pragma once
 #include <Eigen/Dense>
@@ -63,6 +63,7 @@ struct NetworkCoefficients {
   double g_heater = 0.0;   // heater: conductance on the convector temperature [W/K]
   double Q_engine = 0.0, Q_aux = 0.0, Q_lt = 0.0;  // heat into metal, engine loop, LT [W]
   double Q_oil = 0.0;      // heat into the oil (its share of the engine's friction) [W]
+  double Q_loop = 0.0;     // heat into the heater loop (fuel-fired heater) [W]
 };
 
 /// Node temperatures [K].

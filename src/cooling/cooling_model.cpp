@@ -68,6 +68,7 @@ void CoolingModel::reset(double ambient_T_K, double metal_T_K, double coolant_ht
   eng_ = 0.0;
   w_lt_ = p_.lt.pump_idle_speed_rad_s;
   heater_valve_open_ = T_.engine_loop >= p_.heater.min_coolant_K;
+  convectors_warm_ = T_.convector >= p_.heater.min_coolant_K;
   out_ = CoolingOutputs{};
   out_.coolant_ht_T_K = T_.engine_loop;
   out_.radiator_coolant_T_K = T_.radiator;
@@ -196,14 +197,20 @@ void CoolingModel::ltPump(SubstepState& s) const {
 // Heater valve and heater-loop flow: the valve (with its lockout hysteresis on the engine
 // outlet) lets the heater loop into the circuit only while heating is wanted; the loop then
 // takes its share of the HT pump flow, or, with the engine (and its pump) standing, the
-// electric circulation pump's flow.
+// electric circulation pump's flow. The convectors' own lockout (no cold air) senses the water
+// they hold, with the same thresholds. The fuel-fired heater in the loop runs the electric
+// circulation pump while it burns (its flow circulates the loop; with the valve shut the loop
+// exchanges nothing with the engine).
 void CoolingModel::heaterValve(const CoolingInputs& in, SubstepState& s) {
   const auto& hp = p_.heater;
-  const double T_c = T_.engine_loop;
+  const double T_c = T_.engine_loop, T_v = T_.convector;
   if (T_c >= hp.min_coolant_K) heater_valve_open_ = true;
   if (T_c < hp.min_coolant_K - hp.lockout_hysteresis_K) heater_valve_open_ = false;
-  const bool wanted = in.cabin_from_hvac ? in.cabin_heat_demand_W > 0.0 : s.Ta < hp.balance_temperature_K;
-  s.valve_open = heater_valve_open_ && wanted;
+  if (T_v >= hp.min_coolant_K) convectors_warm_ = true;
+  if (T_v < hp.min_coolant_K - hp.lockout_hysteresis_K) convectors_warm_ = false;
+  s.heating_wanted = in.cabin_from_hvac ? in.cabin_heat_demand_W > 0.0 : s.Ta < hp.balance_temperature_K;
+  s.valve_open = heater_valve_open_ && s.heating_wanted;
+  if (in.aux_heater_heat_W > 0.0) s.e_pump_W = hp.electric_pump_power_W;  // the heater's pump
   if (!s.valve_open) return;
   if (s.w_p > 0.0) {
     s.q_heater = hp.loop_flow_fraction * s.q_pump;
@@ -217,7 +224,7 @@ void CoolingModel::heaterValve(const CoolingInputs& in, SubstepState& s) {
 // what the convectors deliver at their water temperature, G_h (T_v - T_ref) = q0 + g θ_v with
 // T_ref the ambient (heater/ balance point) or the cabin (the hvac participant's demand).
 void CoolingModel::heaterLoad(const CoolingInputs& in, SubstepState& s) const {
-  if (!s.valve_open) return;
+  if (!s.heating_wanted || !convectors_warm_) return;
   const auto& hp = p_.heater;
   const double T_ref = in.cabin_from_hvac ? in.cabin_T_K : s.Ta;
   if (!(T_.convector > T_ref)) return;  // the convectors cannot heat the cabin
@@ -243,7 +250,8 @@ void CoolingModel::solveTemperatures(const CoolingInputs& in, SubstepState& s) {
   k.preheat = s.pre;
   k.G_lt = s.G_lt;
   k.Q_engine = in.engine_heat_W - in.em_engine_heat_W;  // net heat into the metal: minus what the P1 flange takes
-  k.Q_aux = in.aux_heater_heat_W + in.gearbox_cooler_heat_W;  // both into the engine loop
+  k.Q_aux = in.gearbox_cooler_heat_W;     // into the engine loop
+  k.Q_loop = in.aux_heater_heat_W;        // the fuel-fired heater sits in the heater loop
   k.Q_lt = in.lt_heat_W;
   k.Q_oil = in.engine_oil_heat_W;
   // Heater Q = min(D, q0 + g θ_v) taken at the new convector temperature: the branch the old

@@ -17,10 +17,12 @@
 //                 e-machine's housing and rotor, which its LT heat then carries)
 //   C_o dT_o/dt = Q̇_oil + G_om (T_m - T_o) - G_oc (T_o - T_c)   (Q̇_oil: the engine's friction heat
 //                 carried by the oil, bearings and valve train; G_oc: the engine's oil cooler)
-//   C_c dT_c/dt = G_mc (T_m - T_c) + G_oc (T_o - T_c) - W_r (T_c - T_r) - W_v (T_c - T_v) + Q̇_aux + Q̇_gb
-//                 (Q̇_aux: fuel-fired heater; Q̇_gb: the automatic gearbox's oil-to-coolant cooler)
+//   C_c dT_c/dt = G_mc (T_m - T_c) + G_oc (T_o - T_c) - W_r (T_c - T_r) - W_v (T_c - T_v) + Q̇_gb
+//                 (Q̇_gb: the automatic gearbox's oil-to-coolant cooler)
 //   C_r dT_r/dt = W_r (T_c - T_r) - Q̇_rad,HT
-//   C_v dT_v/dt = W_v (T_c - T_v) - Q̇_heater
+//   C_v dT_v/dt = W_v (T_c - T_v) - Q̇_heater + Q̇_aux   (Q̇_aux: the fuel-fired water heater, in
+//                 the heating circuit ahead of the convectors; it switches on its own outlet
+//                 sensor, the hvac participant reading T_v)
 //   C_l dT_l/dt = Q̇_LT,in - Q̇_rad,LT
 //   C_m = m_metal c_metal,  C_o = m_oil c_oil,  C_c, C_r, C_v = ρ V c of the engine loop, radiator and
 //   convector volumes,  C_l = ρ V_lt c + C_components
@@ -29,17 +31,21 @@
 //   T_air,HT,in = T_a + Q̇_rad,LT/(ṁ_air c_p,air)        (LT radiator pre-heats the HT radiator air)
 //   Q̇_rad,HT = G_HT (T_c - T_air,HT,in)                 (radiator inlet = engine outlet)
 //   Heating wanted: T_a < T_bal (balance point) or, with the hvac participant (in.cabin_from_hvac),
-//   its demand Q̇_d > 0. Heater valve: opens when T_c >= T_heat,min and shuts when
-//   T_c < T_heat,min - hysteresis; shut while no heating is wanted (the climate control keeps
-//   the convector loop out of the circuit).
+//   its demand Q̇_d > 0. Heater valve (heater loop <-> engine loop): opens when T_c >= T_heat,min
+//   and shuts when T_c < T_heat,min - hysteresis; shut while no heating is wanted (the climate
+//   control keeps the convector loop out of the circuit). Convectors: draw heat while heating is
+//   wanted and their water is warm (the same lockout on T_v: on at T_v >= T_heat,min, off below
+//   T_heat,min - hysteresis), valve open or shut (shut: the loop heated by the fuel-fired heater).
 //   Q̇_heater = min(UA_cab (T_bal - T_a), G_h (T_v - T_a)), or with the hvac participant
-//   min(Q̇_d, G_h (T_v - T_cab)) (0 if T_v <= T_cab); 0 with the valve shut
+//   min(Q̇_d, G_h (T_v - T_cab)) (0 if T_v <= T_cab); 0 while no heating is wanted or T_v is cold
 // Coolant flows: V̇_pump = V̇_r ω_p/ω_r; radiator share y_eff = leak + (1 - leak) y, the rest
 // bypasses; ṁ_rad = ρ y_eff V̇_pump; heater loop (parallel branch) ṁ_heater = ρ f_h V̇_pump.
 // Engine stopped (the step's mean pump speed 0) with the heater valve open: the 24 V electric
 // circulation pump circulates the heater loop through the engine jacket, ṁ_heater = ρ V̇_e, at
 // its electric power P_e (0 otherwise; V̇_e = 0, a bus without the pump: the loop stands, the
-// convectors cool their own water only and the engine loop gives nothing).
+// convectors cool their own water only and the engine loop gives nothing). While the fuel-fired
+// heater burns the same pump runs (its circulating pump): P_e booked, the loop circulating within
+// itself when the valve is shut.
 // LT: ṁ_lt = ρ V̇_lt,r ω_lt/ω_lt,max.
 // Thermostat: wax lag dT_w/dt = (T_c - T_w)/τ_w; play operator of half-width h = hysteresis/2,
 //   T_p <- clamp(T_p, T_w - h, T_w + h); y = clamp((T_p + h - T_start)/(T_full - T_start), 0, 1),
@@ -95,7 +101,7 @@ struct CoolingInputs {
   bool cabin_from_hvac = false;
   double cabin_heat_demand_W = 0.0;    // heat the cabin asks of the convectors [W]
   double cabin_T_K = 293.15;           // cabin temperature [K] (convector driving difference)
-  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the HT coolant [W]
+  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the heater loop (convector volume) [W]
   double gearbox_cooler_heat_W = 0.0;  // the AT's oil-to-coolant cooler into the HT engine loop [W]
 };
 
@@ -119,7 +125,7 @@ struct CoolingOutputs {
   double lt_pump_power_W = 0.0;        // LT pump clutch input power (shaft + slip) [W]
   double lt_pump_hydraulic_power_W = 0.0;
   double radiator_ht_heat_W = 0.0, radiator_lt_heat_W = 0.0, heater_heat_W = 0.0;
-  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the HT coolant [W]
+  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the heater loop (convector volume) [W]
   double surface_loss_W = 0.0;
   double air_volume_flow_m3_s = 0.0, air_mass_flow_kg_s = 0.0;
   double coolant_flow_m3_s = 0.0, radiator_coolant_flow_m3_s = 0.0;
@@ -179,6 +185,7 @@ class CoolingModel {
     double h = 0, Ta = 0, w_p = 0;            // substep [s], ambient [K], HT pump speed [rad/s]
     double q_pump = 0, pump_W = 0;            // HT pump flow [m^3/s] and shaft power [W]
     double y = 0, q_rad = 0, m_rad = 0;       // thermostat opening [-], radiator flow [m^3/s], [kg/s]
+    bool heating_wanted = false;              // the cabin wants heat (hvac demand or balance point)
     bool valve_open = false;                  // heater loop in the circuit
     double q_heater = 0;                      // heater-loop flow [m^3/s]
     double e_pump_W = 0;                      // electric circulation pump power [W]
@@ -189,7 +196,7 @@ class CoolingModel {
     double w_lt = 0, m_lt = 0;                // LT pump speed [rad/s], LT coolant flow [kg/s]
     double lt_hyd_W = 0, lt_in_W = 0;         // LT pump hydraulic and drive power [W]
     double G_lt = 0, G_ht = 0, pre = 0;       // radiator conductances [W/K], LT air preheat [-]
-    bool heater_on = false;                   // convectors drawing heat (valve open, demand, T_v warm)
+    bool heater_on = false;                   // convectors drawing heat (demand, their water warm)
     double heater_demand_W = 0;               // heater: the cabin's demand D [W] ...
     double heater_q0 = 0, heater_g = 0;       // ... or the convectors' q0 + g θ_v [W], [W/K]
     NetworkFluxes flux;                       // heat flows of the implicit update [W]
@@ -214,6 +221,7 @@ class CoolingModel {
   NetworkState T_, T0_;  // node temperatures and those of the last reset [K]
   double T_w_ = 0, T_p_ = 0, eng_ = 0, w_lt_ = 0;
   bool heater_valve_open_ = false;
+  bool convectors_warm_ = false;  // the convectors' lockout on the water they hold
   CoolingOutputs out_;
 };
 

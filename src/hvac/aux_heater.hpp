@@ -1,9 +1,10 @@
-// Fuel-fired coolant heater of city-bus size (Webasto Thermo 300 class): an on/off burner that
-// heats the engine's HT coolant circuit. ROS-free.
+// Fuel-fired water heater of city-bus size (Webasto Thermo 300 class): an on/off burner in the
+// heating circuit ahead of the convectors, switched on the water temperature at its own sensor
+// (the heating loop's water, /cooling/state convector_coolant_temperature_k). ROS-free.
 //
-// Controller: on while heat is demanded and the coolant is below T_on; off once the coolant is
+// Controller: on while heat is demanded and the water is below T_on; off once the water is
 // above T_off or no heat is demanded (hysteresis T_on < T_off; between them it keeps its state).
-// When on: Q̇ = Q̇_rated into the coolant [W], fuel ṁ_f = Q̇/(η LHV) [kg/s] (diesel LHV,
+// When on: Q̇ = Q̇_rated into the water [W], fuel ṁ_f = Q̇/(η LHV) [kg/s] (diesel LHV,
 // common/units.hpp), electric draw P_el [W]. Cumulatives are booked exactly:
 // m_f LHV η = Q (the test's energy balance).
 #pragma once
@@ -22,7 +23,8 @@ class AuxHeater {
   explicit AuxHeater(const AuxHeaterParams& p) : p_(p) {}
   void reset() { s_ = AuxHeaterState{}; }
   /// Decides on/off at the step's start and books the step [dt_s].
-  const AuxHeaterState& step(double dt_s, double coolant_T_K, bool heat_demanded);
+  /// water_T_K: the water at its sensor [K].
+  const AuxHeaterState& step(double dt_s, double heater_water_T_K, bool heat_demanded);
   const AuxHeaterState& state() const { return s_; }
 
  private:

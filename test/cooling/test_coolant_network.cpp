@@ -66,19 +66,20 @@ TEST(CoolantNetwork, EveryImplicitUpdateConservesEnergyToRoundOff) {
     k.q_heater = u(0.0, 1.0) < 0.5 ? u(0.0, 12e3) : 0.0;
     k.g_heater = k.q_heater > 0.0 ? 0.0 : u(0.0, 400.0);
     k.Q_engine = u(-5e3, 120e3);
-    k.Q_aux = u(0.0, 1.0) < 0.2 ? 30e3 : 0.0;
+    k.Q_aux = u(0.0, 1.0) < 0.2 ? 3e3 : 0.0;
+    k.Q_loop = u(0.0, 1.0) < 0.2 ? 30e3 : 0.0;
     k.Q_lt = u(0.0, 8e3);
     const double h = u(0.01, 0.1);
     const NetworkState T0 = T;
     const NetworkFluxes f = net.step(h, Ta, k, T);
-    const double in = k.Q_engine + k.Q_oil + k.Q_aux + k.Q_lt;
+    const double in = k.Q_engine + k.Q_oil + k.Q_aux + k.Q_loop + k.Q_lt;
     const double out = f.radiator_ht + f.radiator_lt + f.heater + f.surface;
     const double r = h * (in - out) - net.storedSince_J(T, T0);
     worst = std::max(worst, std::abs(r) / (h * 120e3));
     // The exchanges between the volumes are what each volume gained or lost.
     EXPECT_NEAR(net.capacities().radiator * (T.radiator - T0.radiator), h * (f.to_radiator - f.radiator_ht),
                 1e-9 * h * 120e3);
-    EXPECT_NEAR(net.capacities().convector * (T.convector - T0.convector), h * (f.to_convector - f.heater),
+    EXPECT_NEAR(net.capacities().convector * (T.convector - T0.convector), h * (f.to_convector - f.heater + k.Q_loop),
                 1e-9 * h * 120e3);
     EXPECT_NEAR(net.capacities().oil * (T.oil - T0.oil), h * (k.Q_oil - f.oil_cooler - f.oil_to_metal),
                 1e-9 * h * 120e3);

@@ -478,8 +478,8 @@ TEST(CoolingModel, HeaterValveCyclesWithHysteresisAtLowHeat) {
       t_switch = k * 0.01;
     }
     on = now;
-    if (m.outputs().heater_heat_W > 0.0) {
-      EXPECT_TRUE(now) << k;  // heat only through the open valve
+    if (m.outputs().heater_heat_W > 0.0) {  // heat only from warm convector water (their lockout)
+      EXPECT_GT(m.outputs().convector_coolant_T_K, celsiusToK(35.0 - 0.5)) << k;
     }
     Tmin = std::min(Tmin, m.outputs().coolant_ht_T_K);
     Tmax = std::max(Tmax, m.outputs().coolant_ht_T_K);
@@ -495,8 +495,9 @@ TEST(CoolingModel, HeaterValveCyclesWithHysteresisAtLowHeat) {
 }
 
 // The hvac participant's cabin (hvac:=on): its demand served up to the convectors' capacity
-// G_h (T_v - T_cabin) at the convector water temperature, the fuel-fired heater's heat counted
-// as heat in, the balance closed.
+// G_h (T_v - T_cabin) at the convector water temperature once that water is warm (whatever the
+// valve to the engine), the fuel-fired heater's heat (into the heating loop) counted as heat in,
+// the balance closed.
 TEST(CoolingModel, HvacDemandToTheCabinAndFuelHeaterHeatCloseTheBalance) {
   CoolingParams p = yamlParams();
   CoolingModel m(p);
@@ -519,10 +520,12 @@ TEST(CoolingModel, HvacDemandToTheCabinAndFuelHeaterHeatCloseTheBalance) {
     m.step(dt, in);
     const CoolingOutputs& o = m.outputs();
     const double T_v1 = o.convector_coolant_T_K;
-    if (T_c >= p.heater.min_coolant_K + 1.0 && T_v > in.cabin_T_K) {  // valve open: the demand if
-      // the convectors can at their water temperature (at the step's start), else the
-      // conductance branch of the implicit update G_h (T_v,new - T_cab)
+    if (T_c >= p.heater.min_coolant_K + 1.0) {
       ASSERT_TRUE(o.heater_valve_open);
+    }
+    if (T_v >= p.heater.min_coolant_K + 1.0) {  // convectors warm: the demand if they can at their
+      // water temperature (at the step's start), else the conductance branch of the implicit
+      // update G_h (T_v,new - T_cab)
       if (p.heater.conductance_W_K * (T_v - in.cabin_T_K) < in.cabin_heat_demand_W) {
         EXPECT_NEAR(o.heater_heat_W, p.heater.conductance_W_K * (T_v1 - in.cabin_T_K), 1e-6);
         capacity_seen = true;
@@ -531,7 +534,7 @@ TEST(CoolingModel, HvacDemandToTheCabinAndFuelHeaterHeatCloseTheBalance) {
         demand_seen = true;
       }
     }
-    if (T_c < p.heater.min_coolant_K - p.heater.lockout_hysteresis_K) {
+    if (T_v < p.heater.min_coolant_K - p.heater.lockout_hysteresis_K) {
       EXPECT_EQ(o.heater_heat_W, 0.0);
     }
     e_in += (in.engine_heat_W + in.aux_heater_heat_W) * dt;

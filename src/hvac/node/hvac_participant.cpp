@@ -36,7 +36,7 @@ void HvacParticipant::step(const ros::Time& t, double dt_s) {
   HvacInputs in;
   in.ambient_T_K = ambient_T_K_;
   in.ambient_p_Pa = ambient_p_Pa_;
-  in.coolant_T_K = c.coolant_ht_temperature_k;
+  in.heater_water_T_K = c.convector_coolant_temperature_k;  // the heater loop: its own sensor
   // the convectors' heat: the exact mean of cooling's steps since our last sample (its total)
   in.coolant_heat_W = started_ ? (c.heater_j - prev_heater_J_) / dt_s : c.heater_heat_w;
   prev_heater_J_ = c.heater_j;
