@@ -21,8 +21,8 @@
 //                 (Q̇_gb: the automatic gearbox's oil-to-coolant cooler)
 //   C_r dT_r/dt = W_r (T_c - T_r) - Q̇_rad,HT
 //   C_v dT_v/dt = W_v (T_c - T_v) - Q̇_heater + Q̇_aux   (Q̇_aux: the fuel-fired water heater, in
-//                 the heating circuit ahead of the convectors; it switches on its own outlet
-//                 sensor, the hvac participant reading T_v)
+//                 the heating circuit ahead of the convectors; it switches on the water
+//                 reaching it, T_c while the loop flows from the engine, else T_v: the hvac)
 //   C_l dT_l/dt = Q̇_LT,in - Q̇_rad,LT
 //   C_m = m_metal c_metal,  C_o = m_oil c_oil,  C_c, C_r, C_v = ρ V c of the engine loop, radiator and
 //   convector volumes,  C_l = ρ V_lt c + C_components

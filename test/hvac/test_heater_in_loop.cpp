@@ -1,7 +1,8 @@
 // The fuel-fired water heater in the heating loop (src/hvac/aux_heater.hpp feeding
 // src/cooling's convector volume, as the two participants are coupled): its heat lands in the
 // heating loop, not the engine (conservation by parts with the valve to the engine shut and
-// open), and it switches on its own sensor, the loop's water: the water stays inside the
+// open), and it switches on its own sensor (the water reaching it; with the valve shut the loop's
+// own water): the water stays inside the
 // controller's band up to one step's rise, and with the band closed (on/off at one temperature)
 // the water holds that temperature while the heater's mean power is the convectors' draw
 // (energy balance).
@@ -32,7 +33,10 @@ struct Loop {
   cooling::CoolingInputs in;
   Loop(const cooling::CoolingParams& pc, const hvac::AuxHeaterParams& ph) : cool(pc), heater(ph) {}
   void step() {
-    const hvac::AuxHeaterState& h = heater.step(kDt, cool.outputs().convector_coolant_T_K, in.cabin_heat_demand_W > 0);
+    const cooling::CoolingOutputs& o = cool.outputs();
+    const double T_s = hvac::AuxHeater::waterAtHeater(o.coolant_ht_T_K, o.convector_coolant_T_K,
+                                                     o.heater_valve_open && o.heater_loop_flow_m3_s > 0.0);
+    const hvac::AuxHeaterState& h = heater.step(kDt, T_s, in.cabin_heat_demand_W > 0);
     in.aux_heater_heat_W = h.heat_W;
     cool.step(kDt, in);
   }
