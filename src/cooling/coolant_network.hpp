@@ -2,7 +2,8 @@
 // substep by backward Euler with its coefficients frozen. ROS-free, no allocation.
 //
 // Nodes (θ = T - T_a [K], C in J/K, G and W in W/K, Q̇ in W):
-//   m  engine metal + oil                       C_m = m_metal c_metal + m_oil c_oil
+//   m  engine metal: block, head, liners        C_m = m_metal c_metal
+//   o  engine oil: sump, galleries, oil cooler  C_o = m_oil c_oil
 //   c  engine loop: jacket, pump, thermostat housing, bypass, short pipes; its temperature is
 //      the engine outlet ("the" HT coolant temperature: thermostat, fan, heater valve, EMS)
 //   r  radiator volume: radiator core, tanks and its pipes (fed from c at the radiator flow)
@@ -10,10 +11,11 @@
 //      at the heater-loop flow)
 //   l  LT coolant + e-drive housings
 //
-//   C_m dθ_m/dt = Q̇_eng - G_mc (θ_m - θ_c) - G_s θ_m
-//   C_c dθ_c/dt = G_mc (θ_m - θ_c) - W_r (θ_c - θ_r) - W_v (θ_c - θ_v) + Q̇_aux
+//   C_m dθ_m/dt = Q̇_eng - G_mc (θ_m - θ_c) - G_om (θ_m - θ_o) - G_s θ_m
+//   C_o dθ_o/dt = Q̇_oil + G_om (θ_m - θ_o) - G_oc (θ_o - θ_c)
+//   C_c dθ_c/dt = G_mc (θ_m - θ_c) + G_oc (θ_o - θ_c) - W_r (θ_c - θ_r) - W_v (θ_c - θ_v) + Q̇_aux
 //   C_r dθ_r/dt = W_r (θ_c - θ_r) - Q̇_rad,HT,     Q̇_rad,HT = G_HT (θ_c - p θ_l)
-//   C_v dθ_v/dt = W_v (θ_c - θ_v) - Q̇_h,          Q̇_h = q_h + g_h θ_v
+//   C_v dθ_v/dt = W_v (θ_c - θ_v) - Q̇_h + Q̇_loop,  Q̇_h = q_h + g_h θ_v
 //   C_l dθ_l/dt = Q̇_LT - Q̇_rad,LT,                Q̇_rad,LT = G_LT θ_l
 // W_r = ṁ_rad c_p and W_v = ṁ_heater c_p are the capacity rates of the coolant exchanged with
 // the engine loop (well-mixed nodes: what leaves a node leaves at its temperature). The radiator
@@ -23,12 +25,18 @@
 // W_r, the radiator volume never falls below the air inlet temperature. The convectors are
 // driven by the mean temperature of the water they hold (θ_v): their heat leaves the convector
 // volume, also when the loop does not circulate (stagnant water cooled by the convector fans).
-// Q̇_aux: the fuel-fired water heater, plumbed in the engine-side circuit.
+// Q̇_aux: heat into the engine loop (the automatic gearbox's oil cooler). Q̇_loop: heat into the
+// heater loop (the fuel-fired water heater, in the heating circuit ahead of the convectors). Q̇_eng: the engine's
+// heat into its metal (combustion heat through the walls, the friction of the piston rings and
+// skirts on the liners); Q̇_oil: the friction heat the oil carries away from the bearings and the
+// valve train. The oil gives its heat to the coolant through the engine's oil cooler (plate
+// cooler in the engine loop, G_oc) and exchanges heat with the crankcase, block and pistons it
+// is sprayed on and drains over (G_om).
 //
-// Backward Euler over h: (C/h + K) θ_new = C/h θ_old + sources, a 5x5 linear system
+// Backward Euler over h: (C/h + K) θ_new = C/h θ_old + sources, a 6x6 linear system
 // (Eigen, partial-pivot LU). The fluxes are evaluated with θ_new, so that
-//   h (Q̇_eng + Q̇_aux + Q̇_LT - Q̇_rad,HT - Q̇_rad,LT - Q̇_h - G_s θ_m) = Σ C (θ_new - θ_old)
-// holds to round-off (the exchange terms W and G_mc cancel pairwise).
+//   h (Q̇_eng + Q̇_oil + Q̇_aux + Q̇_loop + Q̇_LT - Q̇_rad,HT - Q̇_rad,LT - Q̇_h - G_s θ_m) = Σ C (θ_new - θ_old)
+// holds to round-off (the exchange terms W, G_mc, G_om and G_oc cancel pairwise).
 #pragma once
 #include <Eigen/Dense>
 
@@ -36,7 +44,7 @@ namespace hbt::cooling {
 
 /// Node heat capacities [J/K].
 struct NetworkCapacities {
-  double metal = 0.0, engine_loop = 0.0, radiator = 0.0, convector = 0.0, lt = 0.0;
+  double metal = 0.0, engine_loop = 0.0, radiator = 0.0, convector = 0.0, lt = 0.0, oil = 0.0;
   double coolantHt() const { return engine_loop + radiator + convector; }
 };
 
@@ -44,6 +52,8 @@ struct NetworkCapacities {
 struct NetworkCoefficients {
   double G_mc = 0.0;       // water-jacket conductance metal -> engine loop [W/K]
   double G_s = 0.0;        // engine surface -> ambient [W/K]
+  double G_om = 0.0;       // oil <-> metal (crankcase, block, pistons) [W/K]
+  double G_oc = 0.0;       // oil cooler oil -> engine loop [W/K]
   double W_rad = 0.0;      // radiator flow capacity rate ṁ_rad c_p [W/K]
   double W_heater = 0.0;   // heater-loop flow capacity rate ṁ_h c_p [W/K]
   double G_ht = 0.0;       // HT radiator conductance ε C_min [W/K]
@@ -52,11 +62,13 @@ struct NetworkCoefficients {
   double q_heater = 0.0;   // heater: constant part of its heat [W]
   double g_heater = 0.0;   // heater: conductance on the convector temperature [W/K]
   double Q_engine = 0.0, Q_aux = 0.0, Q_lt = 0.0;  // heat into metal, engine loop, LT [W]
+  double Q_oil = 0.0;      // heat into the oil (its share of the engine's friction) [W]
+  double Q_loop = 0.0;     // heat into the heater loop (fuel-fired heater) [W]
 };
 
 /// Node temperatures [K].
 struct NetworkState {
-  double metal = 0.0, engine_loop = 0.0, radiator = 0.0, convector = 0.0, lt = 0.0;
+  double metal = 0.0, engine_loop = 0.0, radiator = 0.0, convector = 0.0, lt = 0.0, oil = 0.0;
 };
 
 /// Heat flows of one implicit update [W] (evaluated with the new temperatures).
@@ -64,6 +76,8 @@ struct NetworkFluxes {
   double radiator_ht = 0.0, radiator_lt = 0.0, heater = 0.0, surface = 0.0;
   double to_radiator = 0.0;   // W_r (θ_c - θ_r): engine loop -> radiator volume
   double to_convector = 0.0;  // W_v (θ_c - θ_v): engine loop -> convector volume
+  double oil_cooler = 0.0;    // G_oc (θ_o - θ_c): oil -> engine loop through the oil cooler
+  double oil_to_metal = 0.0;  // G_om (θ_o - θ_m): oil -> metal
 };
 
 class CoolantNetwork {

@@ -18,7 +18,8 @@ CoolingModel::CoolingModel(const CoolingParams& p, const std::string& file) : p_
   const auto& ht = p_.ht;
   const double rho_c = ht.coolant_density_kg_m3 * ht.coolant_cp_J_kgK;  // [J/(m^3 K)]
   NetworkCapacities C;
-  C.metal = ht.metal_mass_kg * ht.metal_cp_J_kgK + ht.oil_mass_kg * ht.oil_cp_J_kgK;
+  C.metal = ht.metal_mass_kg * ht.metal_cp_J_kgK;
+  C.oil = ht.oil_mass_kg * ht.oil_cp_J_kgK;
   C.engine_loop = ht.engine_loop_volume_m3 * rho_c;
   C.radiator = ht.radiator_volume_m3 * rho_c;
   C.convector = p_.heater.loop_volume_m3 * rho_c;
@@ -54,10 +55,12 @@ CoolingModel::CoolingModel(const CoolingParams& p, const std::string& file) : p_
   reset(units::celsiusToK(25.0));
 }
 
-void CoolingModel::reset(double ambient_T_K) { reset(ambient_T_K, ambient_T_K, ambient_T_K, ambient_T_K); }
+void CoolingModel::reset(double ambient_T_K) { reset(ambient_T_K, ambient_T_K, ambient_T_K, ambient_T_K, ambient_T_K); }
 
-void CoolingModel::reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K) {
+void CoolingModel::reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K,
+                         double oil_T_K) {
   T_.metal = metal_T_K;
+  T_.oil = oil_T_K;
   T_.engine_loop = T_.radiator = T_.convector = T_w_ = coolant_ht_T_K;
   T_.lt = coolant_lt_T_K;
   T0_ = T_;
@@ -65,11 +68,13 @@ void CoolingModel::reset(double ambient_T_K, double metal_T_K, double coolant_ht
   eng_ = 0.0;
   w_lt_ = p_.lt.pump_idle_speed_rad_s;
   heater_valve_open_ = T_.engine_loop >= p_.heater.min_coolant_K;
+  convectors_warm_ = T_.convector >= p_.heater.min_coolant_K;
   out_ = CoolingOutputs{};
   out_.coolant_ht_T_K = T_.engine_loop;
   out_.radiator_coolant_T_K = T_.radiator;
   out_.convector_coolant_T_K = T_.convector;
   out_.metal_T_K = T_.metal;
+  out_.oil_T_K = T_.oil;
   out_.coolant_lt_T_K = T_.lt;
   out_.ht_air_in_T_K = ambient_T_K;
   out_.thermostat_opening = openingFromPlay(T_p_);
@@ -107,6 +112,7 @@ void CoolingModel::checkFinite(const CoolingInputs& in) const {
     if (!std::isfinite(v)) throw InputError(where, key, "not finite");
   };
   chk(in.engine_heat_W, "engine_heat_W");
+  chk(in.engine_oil_heat_W, "engine_oil_heat_W");
   chk(in.pump_speed_rad_s, "pump_speed_rad_s");
   chk(in.vehicle_speed_m_s, "vehicle_speed_m_s");
   chk(in.ambient_T_K, "ambient_T_K");
@@ -191,14 +197,20 @@ void CoolingModel::ltPump(SubstepState& s) const {
 // Heater valve and heater-loop flow: the valve (with its lockout hysteresis on the engine
 // outlet) lets the heater loop into the circuit only while heating is wanted; the loop then
 // takes its share of the HT pump flow, or, with the engine (and its pump) standing, the
-// electric circulation pump's flow.
+// electric circulation pump's flow. The convectors' own lockout (no cold air) senses the water
+// they hold, with the same thresholds. The fuel-fired heater in the loop runs the electric
+// circulation pump while it burns (its flow circulates the loop; with the valve shut the loop
+// exchanges nothing with the engine).
 void CoolingModel::heaterValve(const CoolingInputs& in, SubstepState& s) {
   const auto& hp = p_.heater;
-  const double T_c = T_.engine_loop;
+  const double T_c = T_.engine_loop, T_v = T_.convector;
   if (T_c >= hp.min_coolant_K) heater_valve_open_ = true;
   if (T_c < hp.min_coolant_K - hp.lockout_hysteresis_K) heater_valve_open_ = false;
-  const bool wanted = in.cabin_from_hvac ? in.cabin_heat_demand_W > 0.0 : s.Ta < hp.balance_temperature_K;
-  s.valve_open = heater_valve_open_ && wanted;
+  if (T_v >= hp.min_coolant_K) convectors_warm_ = true;
+  if (T_v < hp.min_coolant_K - hp.lockout_hysteresis_K) convectors_warm_ = false;
+  s.heating_wanted = in.cabin_from_hvac ? in.cabin_heat_demand_W > 0.0 : s.Ta < hp.balance_temperature_K;
+  s.valve_open = heater_valve_open_ && s.heating_wanted;
+  if (in.aux_heater_heat_W > 0.0) s.e_pump_W = hp.electric_pump_power_W;  // the heater's pump
   if (!s.valve_open) return;
   if (s.w_p > 0.0) {
     s.q_heater = hp.loop_flow_fraction * s.q_pump;
@@ -212,7 +224,7 @@ void CoolingModel::heaterValve(const CoolingInputs& in, SubstepState& s) {
 // what the convectors deliver at their water temperature, G_h (T_v - T_ref) = q0 + g θ_v with
 // T_ref the ambient (heater/ balance point) or the cabin (the hvac participant's demand).
 void CoolingModel::heaterLoad(const CoolingInputs& in, SubstepState& s) const {
-  if (!s.valve_open) return;
+  if (!s.heating_wanted || !convectors_warm_) return;
   const auto& hp = p_.heater;
   const double T_ref = in.cabin_from_hvac ? in.cabin_T_K : s.Ta;
   if (!(T_.convector > T_ref)) return;  // the convectors cannot heat the cabin
@@ -230,14 +242,18 @@ void CoolingModel::solveTemperatures(const CoolingInputs& in, SubstepState& s) {
   NetworkCoefficients k;
   k.G_mc = ht.metal_to_coolant_UA_W_K;
   k.G_s = ht.surface_loss_UA_W_K;
+  k.G_om = ht.oil_to_metal_UA_W_K;
+  k.G_oc = ht.oil_cooler_UA_W_K;
   k.W_rad = rho_cp * s.q_rad;
   k.W_heater = rho_cp * s.q_heater;
   k.G_ht = s.G_ht;
   k.preheat = s.pre;
   k.G_lt = s.G_lt;
   k.Q_engine = in.engine_heat_W - in.em_engine_heat_W;  // net heat into the metal: minus what the P1 flange takes
-  k.Q_aux = in.aux_heater_heat_W + in.gearbox_cooler_heat_W;  // both into the engine loop
+  k.Q_aux = in.gearbox_cooler_heat_W;     // into the engine loop
+  k.Q_loop = in.aux_heater_heat_W;        // the fuel-fired heater sits in the heater loop
   k.Q_lt = in.lt_heat_W;
+  k.Q_oil = in.engine_oil_heat_W;
   // Heater Q = min(D, q0 + g θ_v) taken at the new convector temperature: the branch the old
   // temperature picks, solved again on the other branch if the new temperature picks that one.
   const NetworkState T_old = T_;
@@ -268,6 +284,7 @@ void CoolingModel::checkTemperatures() const {
                                 ", " + std::to_string(nm.max_temperature_K) + "] K");
   };
   chk(T_.metal, "engine metal temperature");
+  chk(T_.oil, "engine oil temperature");
   chk(T_.engine_loop, "HT coolant temperature");
   chk(T_.radiator, "HT radiator coolant temperature");
   chk(T_.convector, "HT convector coolant temperature");
@@ -306,6 +323,7 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.radiator_coolant_T_K = T_.radiator;
   o.convector_coolant_T_K = T_.convector;
   o.metal_T_K = T_.metal;
+  o.oil_T_K = T_.oil;
   o.coolant_lt_T_K = T_.lt;
   o.heater_valve_open = s.valve_open;
   o.heater_loop_flow_m3_s = s.q_heater;
@@ -326,6 +344,7 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.heater_heat_W = f.heater;
   o.aux_heater_heat_W = in.aux_heater_heat_W;
   o.surface_loss_W = f.surface;
+  o.oil_cooler_heat_W = f.oil_cooler;
   o.air_volume_flow_m3_s = s.air.flow_m3_s;
   o.air_mass_flow_kg_s = s.m_air;
   o.coolant_flow_m3_s = s.q_pump;
@@ -337,6 +356,8 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.lt_pump_energy_J += s.lt_in_W * h;
   o.electric_pump_energy_J += s.e_pump_W * h;
   o.engine_heat_J += in.engine_heat_W * h;
+  o.engine_oil_heat_J += in.engine_oil_heat_W * h;
+  o.oil_cooler_J += f.oil_cooler * h;
   o.lt_heat_J += in.lt_heat_W * h;
   o.em_engine_heat_W = in.em_engine_heat_W;
   o.em_engine_heat_J += in.em_engine_heat_W * h;
@@ -347,7 +368,7 @@ void CoolingModel::recordOutputs(const CoolingInputs& in, const SubstepState& s,
   o.heater_J += f.heater * h;
   o.surface_loss_J += f.surface * h;
   o.stored_change_J = network_.storedSince_J(T_, T0_);
-  o.energy_residual_J = o.engine_heat_J + o.lt_heat_J + o.aux_heater_J + o.gearbox_cooler_J - o.em_engine_heat_J - o.radiator_ht_J -
+  o.energy_residual_J = o.engine_heat_J + o.engine_oil_heat_J + o.lt_heat_J + o.aux_heater_J + o.gearbox_cooler_J - o.em_engine_heat_J - o.radiator_ht_J -
                         o.radiator_lt_J - o.heater_J - o.surface_loss_J - o.stored_change_J;
 }
 

@@ -3,7 +3,7 @@
 // circuit whose radiator sits in front of the HT radiator in the same air stream. ROS-free,
 // deterministic, no allocation in step().
 //
-// States: T_m metal+oil [K]; HT coolant in three well-mixed volumes: T_c engine loop (jacket,
+// States: T_m engine metal, T_o engine oil [K]; HT coolant in three well-mixed volumes: T_c engine loop (jacket,
 // pump, thermostat housing, bypass; its temperature is the engine outlet, "the" HT coolant
 // temperature of the thermostat, fan, heater valve, warm-up time and EMS), T_r radiator volume,
 // T_v convector volume (heater loop); T_l LT coolant [K]; T_w thermostat wax [K], T_p
@@ -11,31 +11,41 @@
 // speed (clutch output, before the input-speed cap) [rad/s]; the heater valve (open/shut).
 //
 // Thermal network (equations in coolant_network.hpp; Q̇ in W, C in J/K, G, W in W/K, T_a ambient):
-//   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_s (T_m - T_a) - Q̇_em   (Q̇_em: heat conducted into
-//                 the P1 e-machine's housing and rotor, which its LT heat then carries)
-//   C_c dT_c/dt = G_mc (T_m - T_c) - W_r (T_c - T_r) - W_v (T_c - T_v) + Q̇_aux + Q̇_gb
-//                 (Q̇_aux: fuel-fired heater; Q̇_gb: the automatic gearbox's oil-to-coolant cooler)
+//   C_m dT_m/dt = Q̇_eng - G_mc (T_m - T_c) - G_om (T_m - T_o) - G_s (T_m - T_a) - Q̇_em
+//                 (Q̇_eng: the engine's heat into its metal, combustion heat through the walls and
+//                 the ring and skirt friction on the liners; Q̇_em: heat conducted into the P1
+//                 e-machine's housing and rotor, which its LT heat then carries)
+//   C_o dT_o/dt = Q̇_oil + G_om (T_m - T_o) - G_oc (T_o - T_c)   (Q̇_oil: the engine's friction heat
+//                 carried by the oil, bearings and valve train; G_oc: the engine's oil cooler)
+//   C_c dT_c/dt = G_mc (T_m - T_c) + G_oc (T_o - T_c) - W_r (T_c - T_r) - W_v (T_c - T_v) + Q̇_gb
+//                 (Q̇_gb: the automatic gearbox's oil-to-coolant cooler)
 //   C_r dT_r/dt = W_r (T_c - T_r) - Q̇_rad,HT
-//   C_v dT_v/dt = W_v (T_c - T_v) - Q̇_heater
+//   C_v dT_v/dt = W_v (T_c - T_v) - Q̇_heater + Q̇_aux   (Q̇_aux: the fuel-fired water heater, in
+//                 the heating circuit ahead of the convectors; it switches on the water
+//                 reaching it, T_c while the loop flows from the engine, else T_v: the hvac)
 //   C_l dT_l/dt = Q̇_LT,in - Q̇_rad,LT
-//   C_m = m_metal c_metal + m_oil c_oil,  C_c, C_r, C_v = ρ V c of the engine loop, radiator and
+//   C_m = m_metal c_metal,  C_o = m_oil c_oil,  C_c, C_r, C_v = ρ V c of the engine loop, radiator and
 //   convector volumes,  C_l = ρ V_lt c + C_components
 //   W_r = ṁ_rad c (thermostat),  W_v = ṁ_heater c (heater valve open, heating wanted; else 0)
 //   Q̇_rad,LT = G_LT (T_l - T_a),                       G = ε C_min of the radiator (radiator.hpp)
 //   T_air,HT,in = T_a + Q̇_rad,LT/(ṁ_air c_p,air)        (LT radiator pre-heats the HT radiator air)
 //   Q̇_rad,HT = G_HT (T_c - T_air,HT,in)                 (radiator inlet = engine outlet)
 //   Heating wanted: T_a < T_bal (balance point) or, with the hvac participant (in.cabin_from_hvac),
-//   its demand Q̇_d > 0. Heater valve: opens when T_c >= T_heat,min and shuts when
-//   T_c < T_heat,min - hysteresis; shut while no heating is wanted (the climate control keeps
-//   the convector loop out of the circuit).
+//   its demand Q̇_d > 0. Heater valve (heater loop <-> engine loop): opens when T_c >= T_heat,min
+//   and shuts when T_c < T_heat,min - hysteresis; shut while no heating is wanted (the climate
+//   control keeps the convector loop out of the circuit). Convectors: draw heat while heating is
+//   wanted and their water is warm (the same lockout on T_v: on at T_v >= T_heat,min, off below
+//   T_heat,min - hysteresis), valve open or shut (shut: the loop heated by the fuel-fired heater).
 //   Q̇_heater = min(UA_cab (T_bal - T_a), G_h (T_v - T_a)), or with the hvac participant
-//   min(Q̇_d, G_h (T_v - T_cab)) (0 if T_v <= T_cab); 0 with the valve shut
+//   min(Q̇_d, G_h (T_v - T_cab)) (0 if T_v <= T_cab); 0 while no heating is wanted or T_v is cold
 // Coolant flows: V̇_pump = V̇_r ω_p/ω_r; radiator share y_eff = leak + (1 - leak) y, the rest
 // bypasses; ṁ_rad = ρ y_eff V̇_pump; heater loop (parallel branch) ṁ_heater = ρ f_h V̇_pump.
 // Engine stopped (the step's mean pump speed 0) with the heater valve open: the 24 V electric
 // circulation pump circulates the heater loop through the engine jacket, ṁ_heater = ρ V̇_e, at
 // its electric power P_e (0 otherwise; V̇_e = 0, a bus without the pump: the loop stands, the
-// convectors cool their own water only and the engine loop gives nothing).
+// convectors cool their own water only and the engine loop gives nothing). While the fuel-fired
+// heater burns the same pump runs (its circulating pump): P_e booked, the loop circulating within
+// itself when the valve is shut.
 // LT: ṁ_lt = ρ V̇_lt,r ω_lt/ω_lt,max.
 // Thermostat: wax lag dT_w/dt = (T_c - T_w)/τ_w; play operator of half-width h = hysteresis/2,
 //   T_p <- clamp(T_p, T_w - h, T_w + h); y = clamp((T_p + h - T_start)/(T_full - T_start), 0, 1),
@@ -60,7 +70,7 @@
 //
 // Integration: per substep (<= max_substep_s) the flows, ε and the heater valve are frozen at
 // the start of the substep (the heater's min() on the branch the new convector temperature
-// picks) and the linear 5-node network is advanced by backward Euler (implicit,
+// picks) and the linear 6-node network is advanced by backward Euler (implicit,
 // unconditionally stable). The cumulative energies book exactly the fluxes of that update, so
 // heat in - heat out - Δstored = 0 to round-off. Lags (wax, clutch, LT pump) use the exact
 // exponential update with the new coolant temperature.
@@ -75,7 +85,8 @@
 namespace hbt::cooling {
 
 struct CoolingInputs {
-  double engine_heat_W = 0.0;          // heat rejected by the engine to the HT circuit [W]
+  double engine_heat_W = 0.0;          // heat the engine rejects into its metal [W]
+  double engine_oil_heat_W = 0.0;      // heat the engine's friction puts into its oil [W]
   double pump_speed_rad_s = 0.0;       // HT pump shaft speed = crank speed (1:1) [rad/s]
   double vehicle_speed_m_s = 0.0;      // for ram air [m/s]
   double ambient_T_K = 298.15;         // [K]
@@ -90,13 +101,15 @@ struct CoolingInputs {
   bool cabin_from_hvac = false;
   double cabin_heat_demand_W = 0.0;    // heat the cabin asks of the convectors [W]
   double cabin_T_K = 293.15;           // cabin temperature [K] (convector driving difference)
-  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the HT coolant [W]
+  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the heater loop (convector volume) [W]
   double gearbox_cooler_heat_W = 0.0;  // the AT's oil-to-coolant cooler into the HT engine loop [W]
 };
 
 struct CoolingOutputs {
   double coolant_ht_T_K = 0.0;         // engine loop = engine outlet [K]
   double metal_T_K = 0.0, coolant_lt_T_K = 0.0;
+  double oil_T_K = 0.0;                // engine oil (sump) [K]
+  double oil_cooler_heat_W = 0.0;      // oil -> engine-loop coolant through the oil cooler [W]
   double radiator_coolant_T_K = 0.0;   // radiator volume (= its return to the engine) [K]
   double convector_coolant_T_K = 0.0;  // convector volume (heater loop) [K]
   bool heater_valve_open = false;      // heater loop in the circuit (heating wanted, coolant warm)
@@ -112,7 +125,7 @@ struct CoolingOutputs {
   double lt_pump_power_W = 0.0;        // LT pump clutch input power (shaft + slip) [W]
   double lt_pump_hydraulic_power_W = 0.0;
   double radiator_ht_heat_W = 0.0, radiator_lt_heat_W = 0.0, heater_heat_W = 0.0;
-  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the HT coolant [W]
+  double aux_heater_heat_W = 0.0;      // fuel-fired heater's heat into the heater loop (convector volume) [W]
   double surface_loss_W = 0.0;
   double air_volume_flow_m3_s = 0.0, air_mass_flow_kg_s = 0.0;
   double coolant_flow_m3_s = 0.0, radiator_coolant_flow_m3_s = 0.0;
@@ -121,10 +134,12 @@ struct CoolingOutputs {
   double fan_energy_J = 0.0, fan_drive_energy_J = 0.0, pump_energy_J = 0.0, lt_pump_energy_J = 0.0;
   double electric_pump_energy_J = 0.0; // 24 V heater circulation pump, electric
   double engine_heat_J = 0.0, lt_heat_J = 0.0, aux_heater_J = 0.0;
+  double engine_oil_heat_J = 0.0;      // the engine's friction heat into its oil
+  double oil_cooler_J = 0.0;           // oil -> engine-loop coolant through the oil cooler
   double em_engine_heat_W = 0.0, em_engine_heat_J = 0.0;  // engine metal -> e-machine [W], [J]
   double gearbox_cooler_J = 0.0;       // the AT's oil cooler into the HT engine loop [J]
   double radiator_ht_J = 0.0, radiator_lt_J = 0.0, heater_J = 0.0, surface_loss_J = 0.0;
-  double stored_change_J = 0.0;        // Σ C (T - T_0) over metal, the three HT volumes and LT
+  double stored_change_J = 0.0;        // Σ C (T - T_0) over metal, oil, the three HT volumes and LT
   double energy_residual_J = 0.0;      // in - out - stored change (ideally 0)
   double warmup_time_s = -1.0;         // first time T_c >= opening start (-1 before)
   double time_s = 0.0;
@@ -137,18 +152,22 @@ class CoolingModel {
   /// Cold start: every temperature = ambient_T_K, clutches at rest (e = 0, LT pump idle),
   /// thermostat closed, cumulatives 0.
   void reset(double ambient_T_K);
-  /// Restarts warm: metal + oil, HT (all three volumes) and LT coolant at the given temperatures [K] (the wax and its
+  /// Restarts warm: metal, oil, HT (all three volumes) and LT coolant at the given temperatures [K] (the wax and its
   /// play on the heating branch at the coolant, the heater valve as the coolant sets it), fan
   /// clutch released; the stored energy and warm-up time count from this state (warm-up time 0
   /// when the coolant is already at the thermostat's opening).
-  void reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K);
+  void reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K, double oil_T_K);
+  /// The same with the oil at the metal's temperature.
+  void reset(double ambient_T_K, double metal_T_K, double coolant_ht_T_K, double coolant_lt_T_K) {
+    reset(ambient_T_K, metal_T_K, coolant_ht_T_K, coolant_lt_T_K, metal_T_K);
+  }
   /// Advances by dt_s with inputs held constant. Throws ModelDivergence naming the quantity.
   void step(double dt_s, const CoolingInputs& in);
   const CoolingOutputs& outputs() const { return out_; }
   const CoolingParams& params() const { return p_; }
   const Radiator& htRadiator() const { return rad_ht_; }
   const Radiator& ltRadiator() const { return rad_lt_; }
-  /// Heat capacities of the network's nodes [J/K] (metal, engine loop, radiator, convector, LT).
+  /// Heat capacities of the network's nodes [J/K] (metal, engine loop, radiator, convector, LT, oil).
   const NetworkCapacities& capacities() const { return network_.capacities(); }
 
   /// Air path alone: volume flow [m^3/s], fan pressure rise [Pa] and signed fan power [W] at fan
@@ -166,6 +185,7 @@ class CoolingModel {
     double h = 0, Ta = 0, w_p = 0;            // substep [s], ambient [K], HT pump speed [rad/s]
     double q_pump = 0, pump_W = 0;            // HT pump flow [m^3/s] and shaft power [W]
     double y = 0, q_rad = 0, m_rad = 0;       // thermostat opening [-], radiator flow [m^3/s], [kg/s]
+    bool heating_wanted = false;              // the cabin wants heat (hvac demand or balance point)
     bool valve_open = false;                  // heater loop in the circuit
     double q_heater = 0;                      // heater-loop flow [m^3/s]
     double e_pump_W = 0;                      // electric circulation pump power [W]
@@ -176,7 +196,7 @@ class CoolingModel {
     double w_lt = 0, m_lt = 0;                // LT pump speed [rad/s], LT coolant flow [kg/s]
     double lt_hyd_W = 0, lt_in_W = 0;         // LT pump hydraulic and drive power [W]
     double G_lt = 0, G_ht = 0, pre = 0;       // radiator conductances [W/K], LT air preheat [-]
-    bool heater_on = false;                   // convectors drawing heat (valve open, demand, T_v warm)
+    bool heater_on = false;                   // convectors drawing heat (demand, their water warm)
     double heater_demand_W = 0;               // heater: the cabin's demand D [W] ...
     double heater_q0 = 0, heater_g = 0;       // ... or the convectors' q0 + g θ_v [W], [W/K]
     NetworkFluxes flux;                       // heat flows of the implicit update [W]
@@ -201,6 +221,7 @@ class CoolingModel {
   NetworkState T_, T0_;  // node temperatures and those of the last reset [K]
   double T_w_ = 0, T_p_ = 0, eng_ = 0, w_lt_ = 0;
   bool heater_valve_open_ = false;
+  bool convectors_warm_ = false;  // the convectors' lockout on the water they hold
   CoolingOutputs out_;
 };
 

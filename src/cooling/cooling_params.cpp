@@ -9,8 +9,10 @@ void CoolingParams::declare(ParamSet& ps) {
   ps.setPrefix("ht/");
   ps.add("metal_mass_kg", h.metal_mass_kg, "kg", 10.0, 3000.0, "engine metal taking part in warm-up");
   ps.add("metal_cp_J_kgK", h.metal_cp_J_kgK, "J/(kg K)", 300.0, 1000.0, "metal specific heat");
-  ps.add("oil_mass_kg", h.oil_mass_kg, "kg", 0.0, 200.0, "engine oil (lumped with the metal)");
+  ps.add("oil_mass_kg", h.oil_mass_kg, "kg", 1.0, 200.0, "engine oil (the oil node)");
   ps.add("oil_cp_J_kgK", h.oil_cp_J_kgK, "J/(kg K)", 1500.0, 2800.0, "oil specific heat");
+  ps.add("oil_cooler_UA_W_K", h.oil_cooler_UA_W_K, "W/K", 10.0, 1e5, "engine oil cooler, oil to engine-loop coolant");
+  ps.add("oil_to_metal_UA_W_K", h.oil_to_metal_UA_W_K, "W/K", 0.0, 1e5, "oil to crankcase, block and pistons");
   ps.add("engine_loop_volume_m3", h.engine_loop_volume_m3, "m^3", 0.001, 0.2,
          "HT coolant of the engine loop (jacket, pump, thermostat housing, bypass)");
   ps.add("radiator_volume_m3", h.radiator_volume_m3, "m^3", 0.001, 0.2, "HT coolant in the radiator and its pipes");
@@ -99,7 +101,8 @@ void CoolingParams::declare(ParamSet& ps) {
   ps.add("min_temperature_K", numerics.min_temperature_K, "K", 100.0, 300.0, "divergence bound");
   ps.add("max_temperature_K", numerics.max_temperature_K, "K", 350.0, 1000.0, "divergence bound");
   ps.setPrefix("warm_start/");
-  ps.add("metal_K", warm_start.metal_K, "K", 300.0, 400.0, "start:=warm: engine metal + oil");
+  ps.add("metal_K", warm_start.metal_K, "K", 300.0, 400.0, "start:=warm: engine metal");
+  ps.add("oil_K", warm_start.oil_K, "K", 300.0, 420.0, "start:=warm: engine oil");
   ps.add("coolant_ht_K", warm_start.coolant_ht_K, "K", 300.0, 390.0, "start:=warm: HT coolant");
   ps.add("coolant_lt_above_ambient_K", warm_start.coolant_lt_above_ambient_K, "K", 0.0, 50.0,
          "start:=warm: LT coolant above ambient");

@@ -13,8 +13,10 @@ namespace hbt::cooling {
 struct HtCircuitParams {
   double metal_mass_kg = 350.0;            // wetted block + head + liners (cast iron), of ~650 kg dry
   double metal_cp_J_kgK = 480.0;           // grey/compacted-graphite iron
-  double oil_mass_kg = 26.0;               // ~30 L sump, lumped with the metal
+  double oil_mass_kg = 26.0;               // ~30 L sump: the oil node
   double oil_cp_J_kgK = 2100.0;
+  double oil_cooler_UA_W_K = 1000.0;       // engine oil cooler, oil -> engine-loop coolant
+  double oil_to_metal_UA_W_K = 300.0;      // oil <-> crankcase, block, pistons (spray, drain, splash)
   double engine_loop_volume_m3 = 0.010;    // jacket, pump, thermostat housing, bypass, short pipes
   double radiator_volume_m3 = 0.015;       // radiator core, tanks and its pipes
   double coolant_density_kg_m3 = 1050.0;   // 50/50 ethylene glycol/water at ~80 °C
@@ -110,7 +112,8 @@ struct NumericsParams {
 /// The warm start (launch argument start:=warm): a bus mid-shift, its engine at the regulated
 /// temperature. Temperatures in K.
 struct WarmStartParams {
-  double metal_K = 359.15;                   // engine metal + oil [K]
+  double metal_K = 359.15;                   // engine metal [K]
+  double oil_K = 359.15;                     // engine oil [K]
   double coolant_ht_K = 356.15;              // HT coolant [K]
   double coolant_lt_above_ambient_K = 3.0;   // LT (e-drive) coolant above ambient [K]
 };

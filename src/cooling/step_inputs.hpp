@@ -2,8 +2,9 @@
 // totals, as the aftertreatment's (common/step_mean.hpp): the engine and the e-machine step every
 // 10 ms, and the difference of two samples of a total is the exact mean of their 10 ms values
 // over the step, Δt = t_now - t_prev:
-//   Q̇_eng = ΔQ_eng / Δt     engine heat into the HT coolant [W] (signed: the map engine books a
+//   Q̇_eng = ΔQ_eng / Δt     engine heat into its metal [W] (signed: the map engine books a
 //                            negative exhaust residual to the coolant, gas_path.cpp)
+//   Q̇_oil = ΔQ_oil / Δt     the engine's friction heat into its oil [W]
 //   ω_pump = Δθ / Δt         mechanical HT pump speed = the crank's mean speed (1:1) [rad/s], >= 0
 //   Q̇_LT = ΔQ_LT / Δt       e-machine + inverter heat into the LT coolant [W]
 //   Q̇_em = ΔQ_em / Δt       heat the e-machine draws from the engine metal [W]
@@ -20,7 +21,8 @@ namespace hbt::cooling {
 
 /// Cumulative totals since t = 0 as the producers publish them (EngineHeat, EMachineState).
 struct CoolingTotals {
-  double engine_heat_J = 0.0;   // heat rejected by the engine to the HT coolant [J]
+  double engine_heat_J = 0.0;   // heat rejected by the engine into its metal [J]
+  double engine_oil_heat_J = 0.0;  // the engine's friction heat into its oil [J]
   double pump_angle_rad = 0.0;  // angle turned by the HT pump [rad]
   double lt_heat_J = 0.0;       // heat into the LT coolant [J] (0 without an e-machine)
   double em_engine_heat_J = 0.0;  // heat the e-machine drew from the engine metal [J] (0 without one)

@@ -91,7 +91,8 @@ double Cylinder::speciesMassFraction(Species s) const {
 
 double Cylinder::fmep_Pa(double omega) const {
   const double pmax = last_.pmax_Pa > 0 ? last_.pmax_Pa : std::max(acc_.pmax_Pa, p_);
-  return P_.friction.fmep_Pa(pmax, crank_.meanPistonSpeed(omega), T_coolant_K_);
+  const double cm = crank_.meanPistonSpeed(omega);
+  return T_oil_K_ > 0.0 ? P_.friction.fmepAtOil_Pa(pmax, cm, T_oil_K_) : P_.friction.fmep_Pa(pmax, cm, T_coolant_K_);
 }
 
 double Cylinder::frictionTorque_Nm(double omega) const {

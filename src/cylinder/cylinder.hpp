@@ -86,6 +86,8 @@ class Cylinder {
   /// Fuel per cycle [kg] for the next cycle (latched at IVC; injection from the maps).
   void setFuelPerCycle(double m_kg) { fuel_demand_kg_ = m_kg; }
   void setCoolantTemperature(double T_K) { T_coolant_K_ = T_K; }
+  /// Oil temperature of the friction [K]; <= 0: coolant + friction oil_minus_coolant_K.
+  void setOilTemperature(double T_K) { T_oil_K_ = T_K; }
   /// Explicit schedule instead of the maps (tests, calibration); latched at IVC.
   void setInjectionOverride(const InjectionSchedule& s) { override_ = s; use_override_ = true; }
   void clearInjectionOverride() { use_override_ = false; }
@@ -205,7 +207,7 @@ class Cylinder {
   bool zones_merged_ = false;  // unburned zone consumed this cycle (mergeConsumedUnburnedZone)
   // IVC reference for Woschni
   double pr_ = 1e5, Vr_ = 1e-3, Tr_ = 300, nr_ = 1.35;
-  double fuel_demand_kg_ = 0, T_coolant_K_ = 363.15, load_ = 0;
+  double fuel_demand_kg_ = 0, T_coolant_K_ = 363.15, T_oil_K_ = 0, load_ = 0;
   double Thead_ = 450, Tliner_ = 400, Tpiston_ = 550;
   InjectionSchedule override_{}, sched_{};
   bool use_override_ = false, heat_transfer_on_ = true, combustion_on_ = true;

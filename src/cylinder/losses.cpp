@@ -42,8 +42,12 @@ double ChenFlynn::viscosityFactor(double Tc) const {
 }
 
 double ChenFlynn::fmep_Pa(double pmax_Pa, double cm, double Tc) const {
+  return fmepAtOil_Pa(pmax_Pa, cm, Tc + oil_minus_coolant_K);
+}
+
+double ChenFlynn::fmepAtOil_Pa(double pmax_Pa, double cm, double T_oil) const {
   const double bar = A_bar + B * pmax_Pa * 1e-5 + C_bar_s_m * cm + D_bar_s2_m2 * cm * cm;
-  return bar * 1e5 * viscosityFactor(Tc);
+  return bar * 1e5 * oilViscosityFactor(T_oil, T_oil_ref_K, vogel_b_K, vogel_c_K, visc_exponent);
 }
 
 }  // namespace hbt::cylinder

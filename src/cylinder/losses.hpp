@@ -18,7 +18,8 @@
 //
 // Chen–Flynn friction mean effective pressure with an oil-viscosity (coolant temperature) factor:
 //   FMEP = [A + B p_max + C c_m + D c_m²] · (μ(T_oil)/μ(T_oil,ref))^n_μ    [bar], p_max [bar]
-//   μ(T) ∝ exp(b/(T − c)) (Vogel), T_oil = T_coolant + ΔT_oil.
+//   μ(T) ∝ exp(b/(T − c)) (Vogel), T_oil the oil temperature given (the cooling node's oil
+//   node in the twin), or T_coolant + ΔT_oil where none is given.
 //   Friction torque of one cylinder: M_f = FMEP V_d / (4π)  [N m].
 #pragma once
 
@@ -61,6 +62,8 @@ struct ChenFlynn {
   double viscosityFactor(double T_coolant_K) const;
   /// FMEP [Pa] for peak pressure [Pa], mean piston speed [m/s] and coolant temperature [K].
   double fmep_Pa(double pmax_Pa, double cm_m_s, double T_coolant_K) const;
+  /// FMEP [Pa] for peak pressure [Pa], mean piston speed [m/s] and oil temperature [K].
+  double fmepAtOil_Pa(double pmax_Pa, double cm_m_s, double T_oil_K) const;
 };
 
 }  // namespace hbt::cylinder

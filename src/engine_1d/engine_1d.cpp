@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/friction_heat.hpp"
 #include "common/units.hpp"
 
 namespace hbt::engine_1d {
@@ -83,7 +84,7 @@ const Engine1DOutputs& Engine1D::step(double dt, const Engine1DInputs& in) {
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw ModelDivergence("engine_1d inputs", "dt", "macro step must be finite and > 0");
   for (double v : {in.speed_rad_s, in.torque_request_Nm, in.ambient_T_K, in.ambient_p_Pa,
-                   in.back_pressure_Pa, in.coolant_T_K})
+                   in.back_pressure_Pa, in.coolant_T_K, in.oil_T_K})
     if (!std::isfinite(v)) throw ModelDivergence("engine_1d inputs", "input", "non-finite input");
   if (!(in.ambient_T_K > 150.0 && in.ambient_p_Pa > 3e4))
     throw ModelDivergence("engine_1d inputs", "ambient", "ambient state out of range");
@@ -97,6 +98,7 @@ const Engine1DOutputs& Engine1D::step(double dt, const Engine1DInputs& in) {
   // boundary conditions
   A.setAmbient(in.ambient_p_Pa, in.ambient_T_K);
   A.setCoolantTemperature(in.coolant_T_K);
+  A.setOilTemperature(in.oil_T_K);
   const double T_exh = out_.exhaust_T_K > 0.0 ? out_.exhaust_T_K : 600.0;
   if (in.back_pressure_Pa > 0.0) {
     back_p_ = in.back_pressure_Pa;
@@ -190,8 +192,12 @@ void Engine1D::computeOutputs(double dt, double w, const Engine1DInputs& in) {
   o.back_pressure_Pa = back_p_;
   o.nox_mass_flow_kg_s = m[kNox];
   o.nox_mass_kg = A.totals().nox_kg;
-  o.coolant_heat_W = m[kWallHeat] + P_.engine.friction_to_coolant * m[kFricTorque] * w;
+  o.friction_W = m[kFricTorque] * w;
+  const EngineHeatSplit heat = splitEngineHeat(m[kWallHeat], o.friction_W, P_.engine.friction_heat_to_oil_fraction);
+  o.coolant_heat_W = heat.metal_W;
   o.coolant_heat_J += o.coolant_heat_W * dt;
+  o.oil_heat_W = heat.oil_W;
+  o.oil_heat_J += o.oil_heat_W * dt;
   o.peak_cylinder_pressure_Pa = A.peakPressureLastCycles();
   o.turbine_inlet_p_Pa = m[kP3];
   o.turbine_inlet_T_K = m[kT3];
@@ -210,6 +216,7 @@ void Engine1D::computeOutputs(double dt, double w, const Engine1DInputs& in) {
   check(o.exhaust_T_K, "exhaust_T_K");
   check(o.nox_mass_flow_kg_s, "nox_mass_flow_kg_s");
   check(o.coolant_heat_W, "coolant_heat_W");
+  check(o.oil_heat_W, "oil_heat_W");
   check(o.turbine_inlet_p_Pa, "turbine_inlet_p_Pa");
   check(o.turbine_inlet_T_K, "turbine_inlet_T_K");
 }

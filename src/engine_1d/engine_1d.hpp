@@ -22,7 +22,8 @@
 //                    fraction x_b -> y_s = (1-x_b) Y_air,s + x_b Y_burned,s; y_NOx = NOx/exhaust
 //   lambda           global: <mdot_air>/(AFR_st <mdot_fuel>) (0 when no fuel)
 //   NOx              engine-out NO as NO2 (Zeldovich, released at exhaust-valve opening)
-//   coolant heat     <Q_wall> + friction_to_coolant <T_f> w
+//   heat             friction P_f = <T_f> w, wall heat <Q_wall>: into the oil f_o P_f, into the
+//                    metal <Q_wall> + (1 - f_o) P_f (common/friction_heat.hpp), all of it
 //   back pressure    input if > 0, else p_amb + K_b <mdot_exh>^2 T/p (orifice law of the ATS)
 // Limits: full-load and motoring torque from the reference (map) curve at w.
 // Any crank speed w >= 0 (engine_assembly.hpp; below 1e-6 rad/s the crank stands, w = 0): the
@@ -49,6 +50,7 @@ struct Engine1DInputs {
   double ambient_p_Pa = units::kStandardAtmosphere_Pa;  // [Pa]
   double back_pressure_Pa = 0.0;   // turbine-outlet system back pressure [Pa]; <= 0: default model
   double coolant_T_K = 363.15;     // [K]
+  double oil_T_K = 0.0;            // friction oil [K]; <= 0: coolant + cylinder friction/oil_minus_coolant_K
   bool fuel_enabled = true;        // false: fuel cut / engine off
 };
 
@@ -77,8 +79,11 @@ struct Engine1DOutputs {
   double back_pressure_Pa = 0;
   double nox_mass_flow_kg_s = 0;       // engine-out, as NO2
   double nox_mass_kg = 0;              // cumulative
-  double coolant_heat_W = 0;
+  double coolant_heat_W = 0;           // into the metal: wall heat + the metal's friction share [W]
   double coolant_heat_J = 0;           // cumulative
+  double oil_heat_W = 0;               // friction heat into the oil [W]
+  double oil_heat_J = 0;               // cumulative
+  double friction_W = 0;               // friction work rate <T_f> w [W]
   double peak_cylinder_pressure_Pa = 0;  // max over cylinders of the last completed cycles
   double turbine_inlet_p_Pa = 0, turbine_inlet_T_K = 0;  // cycle means, mean of both entries
   double max_torque_Nm = 0, min_torque_Nm = 0;           // reference full-load / motoring at w

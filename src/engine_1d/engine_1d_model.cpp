@@ -25,6 +25,7 @@ void Engine1DModel::stepModel(double dt_s, const engine::EngineInputs& in) {
   e.ambient_p_Pa = in.ambient_p_Pa;
   e.back_pressure_Pa = in.back_pressure_Pa;  // <= 0: the engine's own orifice law
   e.coolant_T_K = in.coolant_T_K > 0.0 ? in.coolant_T_K : kWarmCoolant_K;
+  e.oil_T_K = in.oil_T_K;  // <= 0 (no cooling node): the coolant + the cylinder's oil offset
   e.fuel_enabled = in.fuel_enabled;
   engine_.step(dt_s, e);
   copyOutputs(in.speed_rad_s, in.fuel_enabled);
@@ -59,6 +60,9 @@ void Engine1DModel::copyOutputs(double w, bool fuel_enabled) {
   v.nox_mass_kg = o.nox_mass_kg;
   v.heat_to_coolant_W = o.coolant_heat_W;
   v.heat_to_coolant_J = o.coolant_heat_J;
+  v.heat_to_oil_W = o.oil_heat_W;
+  v.heat_to_oil_J = o.oil_heat_J;
+  v.friction_W = o.friction_W;
 }
 
 std::string Engine1DModel::boostLimitedMessage(double duration_s) const {

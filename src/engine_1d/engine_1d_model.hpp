@@ -4,7 +4,8 @@
 //
 // Mapping: inputs one to one, except coolant_T_K <= 0 (no cooling node) -> Engine1D's thermostat
 // temperature kWarmCoolant_K (Engine1DInputs::coolant_T_K, 363.15 K: friction oil viscosity and
-// wall temperatures of the warm engine); back_pressure_Pa <= 0 selects Engine1D's own orifice
+// wall temperatures of the warm engine); oil_T_K (the cooling node's oil) sets the Chen-Flynn
+// friction's oil viscosity, <= 0 the coolant + the cylinder's oil offset; back_pressure_Pa <= 0 selects Engine1D's own orifice
 // law of the exhaust system. The reset is warm as well (coolant kWarmCoolant_K). Outputs:
 //   brake_torque_Nm     Engine1D's one-cycle mean while fuel is enabled; its crank torque (the
 //                       mean over the step, compression pulses resolved; at rest the gas torque

@@ -145,8 +145,8 @@ void Engine1DConfig::declare(ParamSet& ps) {
          "BSFC validation region of the steady check: lowest speed");
   ps.add("validation/min_load", validation_min_load, "-", 0.0, 1.0,
          "BSFC validation region of the steady check: lowest load (T_req / T_full-load)");
-  ps.add("friction_to_coolant", friction_to_coolant, "-", 0.0, 1.0,
-         "share of friction power rejected to the coolant");
+  ps.add("friction_heat_to_oil_fraction", friction_heat_to_oil_fraction, "-", 0.0, 1.0,
+         "share of the friction work carried by the oil (bearings, valve train); the rest heats the metal");
   ps.add("files/cylinder", cylinder_file, "cylinder model YAML (relative to this file's folder)");
   ps.add("files/turbo", turbo_file, "turbocharger YAML (relative to this file's folder)");
   ps.add("files/reference", reference_file, "reference map-engine YAML (relative to this file's folder)");

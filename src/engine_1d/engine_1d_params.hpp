@@ -96,7 +96,7 @@ struct Engine1DConfig {
   double coupling_cylinder_cfl_slow = 0.5;  // the cylinder limit's cfl on a slow crank
   /// Below this crank speed a 720 deg cycle takes longer than cycle_window_max_s [rad/s].
   double slowCrank_rad_s() const { return 4.0 * units::kPi / cycle_window_max_s; }
-  double friction_to_coolant = 0.5;      // share of friction power rejected to the coolant
+  double friction_heat_to_oil_fraction = 0.5;  // share of the friction work carried by the oil (common/friction_heat.hpp)
   // Calibration of the cylinder model for this assembly (applied on top of cylinder/*):
   double woschni_multiplier = 0.0;       // > 0 overrides cylinder/heat_transfer/multiplier
   double diffusion_tail_scale = 1.0;     // x cylinder/combustion/diffusion_tail_deg

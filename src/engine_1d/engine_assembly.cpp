@@ -148,6 +148,9 @@ void EngineAssembly::setFuelPerCycle(double m) {
 void EngineAssembly::setCoolantTemperature(double T) {
   for (auto& s : cyl_) s.cyl->setCoolantTemperature(T);
 }
+void EngineAssembly::setOilTemperature(double T) {
+  for (auto& s : cyl_) s.cyl->setOilTemperature(T);
+}
 void EngineAssembly::setCombustion(bool on) {
   for (auto& s : cyl_) s.cyl->setCombustion(on);
 }

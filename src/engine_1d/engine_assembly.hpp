@@ -111,6 +111,7 @@ class EngineAssembly {
   // --- inputs between steps ---
   void setFuelPerCycle(double m_kg);
   void setCoolantTemperature(double T_K);
+  void setOilTemperature(double T_K);           // friction oil; <= 0: coolant + offset
   void setAmbient(double p_Pa, double T_K);     // air-filter box and intercooler cooling air
   void setBackPressure(double p_Pa, double T_K);
   void setWastegateOpening(double a);

@@ -10,7 +10,10 @@
 //   the crank speed ω [rad/s] is imposed (by the vehicle's crank dynamics); per step of Δt [s]
 //   the model turns the torque request T_req [Nm] into the brake torque T_b it delivers within
 //   its limits T_mot(ω) <= T_b <= T_fl(ω), and the fuel flow ṁ_f [kg/s], exhaust state, engine-out
-//   NOx and heat to the coolant Q̇_c [W] that go with it; cumulative quantities integrate over the
+//   NOx and heat to the cooling that go with it, split by where it enters: Q̇_m into the engine
+//   metal (combustion heat through the walls, the piston rings' and skirts' friction on the
+//   liners) and Q̇_o into the oil (the bearings' and valve train's friction) [W], so that every
+//   friction work W_f ends as Q_m + Q_o (common/friction_heat.hpp); cumulative quantities integrate over the
 //   steps since reset(): m_f = Σ ṁ_f Δt [kg], W+ = Σ max(T_b ω, 0) Δt, W- = Σ min(T_b ω, 0) Δt [J],
 //   and (here, for both models) the exhaust totals of a slower consumer (the aftertreatment,
 //   which takes their difference over its 0.1 s step as the exact mean of the 10 ms values):
@@ -24,6 +27,8 @@
 //   ambient   EngineInputs::ambient_p_Pa <= 0 (a command without one) = the standard atmosphere.
 //   loops     coolant_T_K <= 0 (no cooling node): the model's own warm default (map: the warm
 //             map, no cold-oil correction; 1D: its thermostat temperature, Engine1DInputs);
+//             oil_T_K: the cooling node's oil temperature, which sets the cold-oil friction of
+//             both models; <= 0 (no cooling node): map the warm map, 1D coolant + its offset;
 //             back_pressure_Pa <= 0 (no aftertreatment node): the model's own exhaust system
 //             (map: the bench back-pressure of its map; 1D: its orifice law). Both are echoed in
 //             the outputs as used (0 = none).
@@ -49,6 +54,7 @@ struct EngineInputs {
   double ambient_p_Pa = units::kStandardAtmosphere_Pa;  // [Pa]; <= 0: the standard atmosphere
   double back_pressure_Pa = 0.0;   // turbine-outlet (ATS inlet) pressure [Pa]; <= 0: none
   double coolant_T_K = 0.0;        // engine coolant temperature [K]; <= 0: none
+  double oil_T_K = 0.0;            // engine oil temperature [K]; <= 0: none
   bool fuel_enabled = true;        // false: engine off / fuel cut (torque = motoring)
 };
 
@@ -67,8 +73,10 @@ struct EngineOutputs {
   double exhaust_mass_kg = 0, exhaust_mass_T_kg_K = 0, exhaust_T_time_K_s = 0;
   double o2_mass_kg = 0, co2_mass_kg = 0, h2o_mass_kg = 0;
   double crank_angle_rad = 0;                                   // Σ ω Δt since reset() [rad]
-  double heat_to_coolant_W = 0, heat_to_coolant_J = 0;          // [W], cumulative [J]
-  double coolant_T_K = 0, back_pressure_Pa = 0;  // loop inputs the engine used (0 = none)
+  double heat_to_coolant_W = 0, heat_to_coolant_J = 0;          // into the metal [W], cumulative [J]
+  double heat_to_oil_W = 0, heat_to_oil_J = 0;                  // into the oil [W], cumulative [J]
+  double friction_W = 0;                                        // mechanical friction work rate [W]
+  double coolant_T_K = 0, oil_T_K = 0, back_pressure_Pa = 0;  // loop inputs the engine used (0 = none)
   double friction_correction_Nm = 0, pumping_correction_Nm = 0;  // map: cold oil, back-pressure
 };
 
@@ -107,6 +115,7 @@ class EngineModel {
     in_ = in;
     if (!(in_.ambient_p_Pa > 0.0)) in_.ambient_p_Pa = units::kStandardAtmosphere_Pa;
     if (!(in_.coolant_T_K > 0.0)) in_.coolant_T_K = 0.0;
+    if (!(in_.oil_T_K > 0.0)) in_.oil_T_K = 0.0;
     if (!(in_.back_pressure_Pa > 0.0)) in_.back_pressure_Pa = 0.0;
     stepModel(dt_s, in_);
     finishOutputs();
@@ -147,6 +156,7 @@ class EngineModel {
   void finishOutputs() {
     out_.speed_rad_s = in_.speed_rad_s;
     out_.coolant_T_K = in_.coolant_T_K;
+    out_.oil_T_K = in_.oil_T_K;
     out_.back_pressure_Pa = in_.back_pressure_Pa;
     if (!(out_.exhaust_T_K > 0.0)) out_.exhaust_T_K = in_.ambient_T_K;
   }

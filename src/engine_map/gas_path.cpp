@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/friction_heat.hpp"
 #include "common/species.hpp"
 #include "common/units.hpp"
 
@@ -44,7 +45,7 @@ ExhaustComposition leanProducts(double lambda, double y) {
 
 GasPathState computeGasPath(const GasPathParams& p, double w, double torque_Nm,
                             double load_fraction, double fuel_kg_s, double fuel_ref_kg_s,
-                            double T_amb, double p_amb) {
+                            double T_amb, double p_amb, double friction_W, double cold_friction_W) {
   GasPathState s;
   const double wpos = std::max(w, 0.0);
   const double xf = fuel_ref_kg_s > 0.0 ? std::clamp(fuel_kg_s / fuel_ref_kg_s, 0.0, 1.0) : 0.0;
@@ -68,8 +69,9 @@ GasPathState computeGasPath(const GasPathParams& p, double w, double torque_Nm,
   const double x = std::clamp(load_fraction, 0.0, 1.0);
   const double fcool =
       p.coolant_fraction_light_load + x * (p.coolant_fraction_full_load - p.coolant_fraction_light_load);
-  s.coolant_heat_W =
-      fcool * s.fuel_power_W + p.coolant_fraction_of_motoring * std::max(-s.brake_power_W, 0.0);
+  s.friction_W = std::max(friction_W, 0.0);
+  const double fired_heat_W = s.fuel_power_W > 0.0 ? fcool * s.fuel_power_W + std::max(cold_friction_W, 0.0) : 0.0;
+  s.coolant_heat_W = std::max(fired_heat_W, s.friction_W);  // the wall heat Q_cool - P_f >= 0
   s.misc_heat_W = p.misc_heat_fraction * s.fuel_power_W;
   s.intercooler_heat_W =
       s.air_mass_flow_kg_s * p.air_cp_J_kgK * (s.compressor_out_T_K - s.intake_manifold_T_K);
@@ -85,6 +87,11 @@ GasPathState computeGasPath(const GasPathParams& p, double w, double torque_Nm,
     s.exhaust_T_K = T_amb;
     s.coolant_heat_W += qexh;
   }
+  // Everything but the friction is wall heat (incl. a negative residual above, into the metal).
+  const EngineHeatSplit split =
+      splitEngineHeat(s.coolant_heat_W - s.friction_W, s.friction_W, p.friction_heat_to_oil_fraction);
+  s.metal_heat_W = split.metal_W;
+  s.oil_heat_W = split.oil_W;
   s.nox_mass_flow_kg_s = p.nox_emission_index_kg_per_kg * fuel_kg_s;
   return s;
 }

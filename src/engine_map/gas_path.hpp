@@ -19,9 +19,14 @@
 // units::kDieselLhv_J_kg: the one definition the ledger and the EMS use too) [W]:
 //   ṁ_f LHV = P_b + Q_cool + Q_misc + Q_ic + ṁ_exh c_p,exh (T_exh - T_amb)
 //   P_b    = T_b ω                                      brake power
-//   Q_cool = f_cool(x) ṁ_f LHV + f_mot · max(-P_b, 0)    coolant (f_cool linear in load
-//            fraction x = T_b/T_fl between the light-load and the full-load fraction;
-//            f_mot = share of motoring friction work going to coolant/oil)
+//   Q_cool = max(f_cool(x) ṁ_f LHV + P_f,cold, P_f)     heat into the engine (metal + oil;
+//            f_cool linear in load fraction x = T_b/T_fl between the light-load and the
+//            full-load fraction of a warm engine's measured balance, which holds its warm
+//            friction; P_f = mechanical friction work rate, warm + cold-oil extra; P_f,cold =
+//            the cold-oil extra ΔT_fric ω, which the cold engine dissipates as heat instead of
+//            delivering it as brake work). Motoring (no fuel): Q_cool = P_f, the rest of the
+//            motoring work (pumping) heats the gas. Split (common/friction_heat.hpp):
+//            Q_oil = f_o P_f, Q_metal = Q_cool - Q_oil (wall heat Q_cool - P_f >= 0)
 //   Q_misc = f_misc ṁ_f LHV                             oil cooler / radiation / convection
 //   Q_ic   = ṁ_a c_p,a (T_co - T_im)                     heat removed by the intercooler
 // which gives the turbine-outlet (aftertreatment-inlet) temperature T_exh.
@@ -45,7 +50,7 @@ struct GasPathParams {
   double intercooler_effectiveness = 0.85;     // ε_ic [-]
   double coolant_fraction_light_load = 0.30;   // f_cool at x = 0 [-] of fuel power
   double coolant_fraction_full_load = 0.20;    // f_cool at x = 1 [-] of fuel power
-  double coolant_fraction_of_motoring = 0.5;   // f_mot [-] of motoring work
+  double friction_heat_to_oil_fraction = 0.5; // f_o [-] of the friction work (common/friction_heat.hpp)
   double misc_heat_fraction = 0.03;            // f_misc [-] of fuel power
   double exhaust_cp_J_kgK = 1100.0;            // c_p,exh [J/(kg K)] lean exhaust 400-800 K
   double air_cp_J_kgK = 1005.0;                // c_p,a [J/(kg K)]
@@ -70,7 +75,10 @@ struct GasPathState {
   double exhaust_T_K = 0.0;              // turbine-outlet temperature [K]
   double fuel_power_W = 0.0;             // ṁ_f LHV [W]
   double brake_power_W = 0.0;            // [W]
-  double coolant_heat_W = 0.0;           // Q_cool [W]
+  double coolant_heat_W = 0.0;           // Q_cool [W]: all heat into the engine (metal + oil)
+  double friction_W = 0.0;               // P_f: mechanical friction work rate [W]
+  double metal_heat_W = 0.0;             // Q_metal: into the metal (wall heat + ring/skirt friction) [W]
+  double oil_heat_W = 0.0;               // Q_oil: into the oil (bearing and valve-train friction) [W]
   double misc_heat_W = 0.0;              // Q_misc [W]
   double intercooler_heat_W = 0.0;       // Q_ic [W]
   double exhaust_enthalpy_W = 0.0;       // ṁ_exh c_p (T_exh - T_amb) [W]
@@ -84,9 +92,11 @@ double stoichiometricAfr(double h_to_c_molar);
 ExhaustComposition leanProducts(double lambda, double h_to_c_molar);
 
 /// Quasi-steady gas path at engine speed ω [rad/s], brake torque [Nm], load fraction
-/// x = T_b/T_fl [-], fuel flow [kg/s], reference (rated) fuel flow [kg/s], ambient T [K], p [Pa].
+/// x = T_b/T_fl [-], fuel flow [kg/s], reference (rated) fuel flow [kg/s], ambient T [K], p [Pa],
+/// mechanical friction work rate P_f [W] and its cold-oil extra P_f,cold [W] (0 <= P_f,cold <= P_f).
 GasPathState computeGasPath(const GasPathParams& p, double omega_rad_s, double torque_Nm,
                             double load_fraction, double fuel_kg_s, double fuel_ref_kg_s,
-                            double ambient_T_K, double ambient_p_Pa);
+                            double ambient_T_K, double ambient_p_Pa, double friction_W,
+                            double cold_friction_W);
 
 }  // namespace hbt::engine_map

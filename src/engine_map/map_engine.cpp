@@ -40,7 +40,8 @@ void MapEngineParams::declare(ParamSet& ps) {
   ps.add("intercooler_effectiveness", g.intercooler_effectiveness, "-", 0.0, 1.0, "air-to-air");
   ps.add("coolant_fraction_light_load", g.coolant_fraction_light_load, "-", 0.0, 0.6, "of fuel power at zero load");
   ps.add("coolant_fraction_full_load", g.coolant_fraction_full_load, "-", 0.0, 0.6, "of fuel power at full load");
-  ps.add("coolant_fraction_of_motoring", g.coolant_fraction_of_motoring, "-", 0.0, 1.0, "of motoring work");
+  ps.add("friction_heat_to_oil_fraction", g.friction_heat_to_oil_fraction, "-", 0.0, 1.0,
+         "share of the friction work carried by the oil (bearings, valve train); the rest heats the metal");
   ps.add("misc_heat_fraction", g.misc_heat_fraction, "-", 0.0, 0.3, "oil/radiation, of fuel power");
   ps.add("exhaust_cp_J_kgK", g.exhaust_cp_J_kgK, "J/(kg K)", 900.0, 1400.0, "mean exhaust cp");
   ps.add("air_cp_J_kgK", g.air_cp_J_kgK, "J/(kg K)", 900.0, 1100.0, "air cp");
@@ -49,7 +50,6 @@ void MapEngineParams::declare(ParamSet& ps) {
   ps.add("fuel_h_to_c_molar", g.fuel_h_to_c_molar, "-", 1.5, 2.2, "H/C molar ratio of the diesel");
   ps.add("friction_share_of_motoring", friction_share_of_motoring, "-", 0.0, 1.0,
          "share of the motoring torque that is mechanical friction (cold-oil correction)");
-  ps.add("oil_minus_coolant_K", oil_minus_coolant_K, "K", -20.0, 40.0, "oil minus coolant temperature");
   ps.add("oil_ref_K", oil_ref_K, "K", 300.0, 420.0, "oil temperature of the warm map");
   ps.add("oil_vogel_b_K", oil_vogel_b_K, "K", 100.0, 5000.0, "Vogel b of the oil viscosity");
   ps.add("oil_vogel_c_K", oil_vogel_c_K, "K", 0.0, 250.0, "Vogel c of the oil viscosity");
@@ -86,7 +86,8 @@ MapEngine::MapEngine(const MapEngineParams& p, const std::string& base_dir) : p_
   engine_map::peakPower(fld_, &w_rated);
   fuel_ref_kg_s_ = steadyFuel(w_rated, fullLoadTorque(w_rated));
   exhaust_ref_kg_s_ = computeGasPath(p_.gas, w_rated, fullLoadTorque(w_rated), 1.0, fuel_ref_kg_s_,
-                                     fuel_ref_kg_s_, 298.15, units::kStandardAtmosphere_Pa).exhaust_mass_flow_kg_s;
+                                     fuel_ref_kg_s_, 298.15, units::kStandardAtmosphere_Pa,
+                                     warmFriction_W(w_rated), 0.0).exhaust_mass_flow_kg_s;
   if (!(fuel_ref_kg_s_ > 0.0))
     throw InputError(map_pts_.source, "fuel consumption", "no positive fuel flow at rated power");
   const auto checkPositive = [](double v, const char* key) {
@@ -106,6 +107,10 @@ double MapEngine::motoringTorque(double w) const {
   const double wl = fld_.speed_rad_s.front();
   if (w < wl) return w <= 0.0 ? 0.0 : t_mot_(wl) * w / wl;
   return t_mot_(w);
+}
+
+double MapEngine::warmFriction_W(double w) const {
+  return p_.friction_share_of_motoring * std::fabs(motoringTorque(w)) * std::max(w, 0.0);
 }
 
 double MapEngine::timeConstant(double w) const {
@@ -141,7 +146,8 @@ void MapEngine::reset(double w, double T, double ambient_T_K, double ambient_p_P
   out_.fuel_cut = out_.fuel_mass_flow_kg_s <= 0.0;
   const double tfl = out_.max_torque_Nm;
   out_.gas = computeGasPath(p_.gas, w, torque_, tfl > 0.0 ? torque_ / tfl : 0.0,
-                            out_.fuel_mass_flow_kg_s, fuel_ref_kg_s_, ambient_T_K, ambient_p_Pa);
+                            out_.fuel_mass_flow_kg_s, fuel_ref_kg_s_, ambient_T_K, ambient_p_Pa,
+                            warmFriction_W(w), 0.0);
   out_.gas.nox_mass_flow_kg_s = noxEmissionIndex(w, torque_) * out_.fuel_mass_flow_kg_s;
 }
 
@@ -150,11 +156,11 @@ const MapEngineOutputs& MapEngine::step(double dt, const MapEngineInputs& in) {
       !std::isfinite(in.ambient_T_K) || !std::isfinite(in.ambient_p_Pa) || !(dt > 0.0))
     throw ModelDivergence("map engine", "inputs", "non-finite input or dt <= 0");
   const double w = std::max(in.speed_rad_s, 0.0);
-  const double dT_fric = in.coolant_T_K > 0.0
-      ? p_.friction_share_of_motoring * std::fabs(motoringTorque(w)) *
-            (oilViscosityFactor(in.coolant_T_K + p_.oil_minus_coolant_K, p_.oil_ref_K,
-                                p_.oil_vogel_b_K, p_.oil_vogel_c_K, p_.oil_viscosity_exponent) - 1.0)
-      : 0.0;
+  const double phi = in.oil_T_K > 0.0 ? oilViscosityFactor(in.oil_T_K, p_.oil_ref_K, p_.oil_vogel_b_K,
+                                                           p_.oil_vogel_c_K, p_.oil_viscosity_exponent)
+                                       : 1.0;
+  const double T_fric_warm = p_.friction_share_of_motoring * std::fabs(motoringTorque(w));
+  const double dT_fric = T_fric_warm * (phi - 1.0);
   double dT_pump = 0.0;
   if (in.back_pressure_Pa > 0.0 && exhaust_ref_kg_s_ > 0.0) {
     const double x = std::max(out_.gas.exhaust_mass_flow_kg_s, 0.0) / exhaust_ref_kg_s_;
@@ -188,8 +194,8 @@ const MapEngineOutputs& MapEngine::step(double dt, const MapEngineInputs& in) {
   out_.friction_correction_Nm = dT_fric;
   out_.pumping_correction_Nm = dT_pump;
   out_.fuel_cut = mf <= 0.0;
-  out_.gas = computeGasPath(p_.gas, w, torque_, tfl > 0.0 ? torque_ / tfl : 0.0, mf,
-                            fuel_ref_kg_s_, in.ambient_T_K, in.ambient_p_Pa);
+  out_.gas = computeGasPath(p_.gas, w, torque_, tfl > 0.0 ? torque_ / tfl : 0.0, mf, fuel_ref_kg_s_,
+                            in.ambient_T_K, in.ambient_p_Pa, (T_fric_warm + dT_fric) * w, dT_fric * w);
   out_.gas.nox_mass_flow_kg_s = noxEmissionIndex(w, torque_) * mf;
   const double pb = torque_ * w;
   out_.fuel_mass_kg += mf * dt;
@@ -198,6 +204,9 @@ const MapEngineOutputs& MapEngine::step(double dt, const MapEngineInputs& in) {
   out_.positive_work_J += std::max(pb, 0.0) * dt;
   out_.motoring_work_J += std::min(pb, 0.0) * dt;
   out_.coolant_heat_J += out_.gas.coolant_heat_W * dt;
+  out_.metal_heat_J += out_.gas.metal_heat_W * dt;
+  out_.oil_heat_J += out_.gas.oil_heat_W * dt;
+  out_.friction_work_J += out_.gas.friction_W * dt;
   out_.nox_mass_kg += out_.gas.nox_mass_flow_kg_s * dt;
   return out_;
 }

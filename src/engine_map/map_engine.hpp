@@ -24,15 +24,18 @@
 //
 // Cold engine and exhaust back-pressure (the map was measured warm, at the bench's back-pressure):
 // the engine needs an extra indicated torque ΔT [Nm] for the same brake torque,
-//   ΔT_fric = s_f |T_mot(ω)| (φ(T_c + ΔT_oil) − 1)     φ = oil viscosity factor (oil_viscosity.hpp)
+//   ΔT_fric = s_f |T_mot(ω)| (φ(T_oil) − 1)            φ = oil viscosity factor (oil_viscosity.hpp),
+//                                                        T_oil from the cooling node's oil
 //   ΔT_pump = (p_b − p_b,ref(ṁ_x)) π_T V_d / (4π)       p_b,ref − p_amb = Δp_r (ṁ_x/ṁ_x,r)^n_b
 //   ΔT = ΔT_fric + ΔT_pump;  T_fl → T_fl − ΔT,  T_mot → T_mot − ΔT,  ṁ_f = F(ω, T_k + ΔT)
 // s_f = share of the motoring torque that is mechanical friction; a turbine-outlet pressure rise
 // Δp raises the turbine-inlet (exhaust-manifold) pressure by about π_T Δp at an unchanged
 // expansion ratio (π_T ≈ the boost pressure ratio of the last step), and PMEP rises by that
 // (Heywood 1988 §13.2: PMEP ≈ p_exhaust − p_intake). p_b,ref is the back-pressure the map was
-// measured with (bench set to the installed ATS at rated flow ṁ_x,r). Inputs coolant_T_K <= 0
+// measured with (bench set to the installed ATS at rated flow ṁ_x,r). Inputs oil_T_K <= 0
 // or back_pressure_Pa <= 0 switch the respective correction off (no cooling / ATS node).
+// Friction heat: the mechanical friction work rate P_f = s_f |T_mot(ω)| φ ω (warm + cold extra,
+// φ = 1 without the cooling node) ends in the oil and the metal (gas_path.hpp, Q_oil, Q_metal).
 // Outputs are valid for the step just taken; no allocation in step().
 #pragma once
 #include <string>
@@ -67,7 +70,6 @@ struct MapEngineParams {
   GasPathParams gas;
   // Cold-engine friction (same oil law and constants as the 1D engine's Chen-Flynn friction).
   double friction_share_of_motoring = 0.75;   // s_f [-]
-  double oil_minus_coolant_K = 5.0;           // ΔT_oil [K]
   double oil_ref_K = 363.15;                  // oil temperature of the (warm) map [K]
   double oil_vogel_b_K = 1170.0, oil_vogel_c_K = 150.0;
   double oil_viscosity_exponent = 0.25;       // n [-]
@@ -84,7 +86,7 @@ struct MapEngineInputs {
   double ambient_T_K = 298.15;       // ambient = air-filter inlet temperature [K]
   double ambient_p_Pa = units::kStandardAtmosphere_Pa;  // ambient pressure [Pa]
   bool fuel_enabled = true;          // false = engine off / fuel cut (torque = motoring)
-  double coolant_T_K = 0.0;          // engine coolant temperature [K]; <= 0: warm map, no correction
+  double oil_T_K = 0.0;              // engine oil temperature [K]; <= 0: warm map, no correction
   double back_pressure_Pa = 0.0;     // turbine-outlet (ATS inlet) pressure [Pa]; <= 0: map's own
 };
 
@@ -105,7 +107,10 @@ struct MapEngineOutputs {
   double brake_work_J = 0.0;           // ∫T ω dt [J] (positive and motoring)
   double positive_work_J = 0.0;        // ∫max(Tω, 0) dt [J]
   double motoring_work_J = 0.0;        // ∫min(Tω, 0) dt [J] (<= 0)
-  double coolant_heat_J = 0.0;         // ∫Q_cool dt [J]
+  double coolant_heat_J = 0.0;         // ∫Q_cool dt [J] (metal + oil)
+  double metal_heat_J = 0.0;           // ∫Q_metal dt [J]
+  double oil_heat_J = 0.0;             // ∫Q_oil dt [J]
+  double friction_work_J = 0.0;        // ∫P_f dt [J]
   double nox_mass_kg = 0.0;            // ∫ṁ_NOx dt [kg]
 };
 
@@ -126,6 +131,8 @@ class MapEngine {
   double fullLoadTorque(double speed_rad_s) const;
   double motoringTorque(double speed_rad_s) const;
   double timeConstant(double speed_rad_s) const;
+  /// Mechanical friction work rate of the warm engine s_f |T_mot(ω)| ω [W].
+  double warmFriction_W(double speed_rad_s) const;
   /// Steady-state fuel flow [kg/s] at brake torque T (0 at or below motoring torque).
   double steadyFuel(double speed_rad_s, double torque_Nm) const;
   double peakTorque() const { return engine_map::peakTorque(fld_); }

@@ -21,7 +21,7 @@ void MapEngineModel::stepModel(double dt_s, const engine::EngineInputs& in) {
   m.ambient_T_K = in.ambient_T_K;
   m.ambient_p_Pa = in.ambient_p_Pa;
   m.fuel_enabled = in.fuel_enabled;
-  m.coolant_T_K = in.coolant_T_K;
+  m.oil_T_K = in.oil_T_K;  // the cold-oil friction (the coolant temperature is not used)
   m.back_pressure_Pa = in.back_pressure_Pa;
   engine_.step(dt_s, m);
   copyOutputs(in.speed_rad_s);
@@ -52,8 +52,11 @@ void MapEngineModel::copyOutputs(double w) {
   v.y_N2 = o.gas.comp.y_N2;
   v.nox_mass_flow_kg_s = o.gas.nox_mass_flow_kg_s;
   v.nox_mass_kg = o.nox_mass_kg;
-  v.heat_to_coolant_W = o.gas.coolant_heat_W;
-  v.heat_to_coolant_J = o.coolant_heat_J;
+  v.heat_to_coolant_W = o.gas.metal_heat_W;
+  v.heat_to_coolant_J = o.metal_heat_J;
+  v.heat_to_oil_W = o.gas.oil_heat_W;
+  v.heat_to_oil_J = o.oil_heat_J;
+  v.friction_W = o.gas.friction_W;
 }
 
 bool MapEngineModel::boostLimited(double m) const {

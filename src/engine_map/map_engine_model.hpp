@@ -2,11 +2,13 @@
 // engine:=map): forwards the inputs to MapEngine (map_engine.hpp, its equations) and its outputs
 // to the model-neutral ones, nothing else.
 //
-// Mapping: inputs one to one (coolant_T_K <= 0 and back_pressure_Pa <= 0 switch MapEngine's
-// cold-oil and back-pressure corrections off, as MapEngineInputs documents). Outputs:
+// Mapping: inputs one to one (oil_T_K <= 0 and back_pressure_Pa <= 0 switch MapEngine's
+// cold-oil and back-pressure corrections off, as MapEngineInputs documents; the coolant
+// temperature is not used). Outputs:
 //   max/min_torque_Nm   the live limits T_fl(ω) − ΔT and T_mot(ω) − ΔT, ΔT = ΔT_fric + ΔT_pump
 //                       (the extra indicated torque of cold oil and back-pressure of the step)
-//   boost, λ, charge air, exhaust flow/T/composition, NOx, coolant heat: the quasi-steady gas path
+//   boost, λ, charge air, exhaust flow/T/composition, NOx: the quasi-steady gas path
+//   heat_to_coolant_W / heat_to_oil_W   Q_metal / Q_oil of the gas path (friction work split)
 //   turbo_speed_rad_s   0 (no turbocharger in this model)
 // Idle speed: MapEngineParams::idle_speed_rad_s (engine_map.yaml). boostLimited(m): the request
 // above the PT1 dynamic full load by more than m while that limit is m below the static one.

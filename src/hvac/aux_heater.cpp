@@ -2,9 +2,9 @@
 
 namespace hbt::hvac {
 
-const AuxHeaterState& AuxHeater::step(double dt_s, double coolant_T_K, bool heat_demanded) {
-  if (!heat_demanded || coolant_T_K > p_.off_above_K) s_.on = false;
-  else if (coolant_T_K < p_.on_below_K) s_.on = true;
+const AuxHeaterState& AuxHeater::step(double dt_s, double heater_water_T_K, bool heat_demanded) {
+  if (!heat_demanded || heater_water_T_K > p_.off_above_K) s_.on = false;
+  else if (heater_water_T_K < p_.on_below_K) s_.on = true;
   const bool burning = s_.on && p_.heat_output_W > 0.0;
   s_.heat_W = burning ? p_.heat_output_W : 0.0;
   s_.fuel_kg_s = s_.heat_W / (p_.efficiency * units::kDieselLhv_J_kg);

@@ -38,7 +38,7 @@ void HvacModel::checkInputs(double dt_s, const HvacInputs& in) const {
   };
   chk(in.ambient_T_K, "ambient_T_K");
   chk(in.ambient_p_Pa, "ambient_p_Pa");
-  chk(in.coolant_T_K, "coolant_T_K");
+  chk(in.heater_water_T_K, "heater_water_T_K");
   chk(in.coolant_heat_W, "coolant_heat_W");
   chk(in.vehicle_speed_m_s, "vehicle_speed_m_s");
   if (!(in.ambient_T_K > 200.0 && in.ambient_T_K < 350.0))
@@ -61,7 +61,7 @@ void HvacModel::step(double dt_s, const HvacInputs& in) {
   // 2. the controller's demand
   const ClimateDemand d = controller_.demand(T, T_a, cabin_.conductance(ci, T).total(), ci.gain_W);
   // 3. auxiliary heater, 4. A/C
-  const AuxHeaterState& h = heater_.step(dt_s, in.coolant_T_K, d.heating_W > 0.0);
+  const AuxHeaterState& h = heater_.step(dt_s, in.heater_water_T_K, d.heating_W > 0.0);
   const AcOperation ac = ac_.operate(d.cooling_W, T_a, in.engine_running);
   // 5. the cabin with the convectors' delivered heat and the A/C's cooling
   ci.heat_W = std::max(0.0, in.coolant_heat_W);

@@ -5,8 +5,8 @@
 //   2. demand = controller(T_cabin, T_a, G_cabin, Q̇_gain): heating [W] (asked of the coolant
 //      convectors: the cooling participant delivers min(demand, G_h (T_coolant - T_cabin)) once its
 //      valve is open) and cooling [W]
-//   3. auxiliary heater: on while heating is demanded and the coolant is cold; heat into the HT
-//      coolant, fuel, electric draw
+//   3. auxiliary heater: on while heating is demanded and the heating loop's water is cold (its
+//      own sensor); heat into the heating loop ahead of the convectors, fuel, electric draw
 //   4. A/C: cooling delivered while the compressor turns, shaft power = Q̇/COP, fan power; it asks
 //      the engine to run (a stop-start engine: no stop, or a restart) while cooling is demanded
 //      and the cabin is more than engine_run_above_K above the cooling set point
@@ -31,7 +31,7 @@ namespace hbt::hvac {
 struct HvacInputs {
   double ambient_T_K = 298.15;
   double ambient_p_Pa = units::kStandardAtmosphere_Pa;
-  double coolant_T_K = 298.15;        // HT coolant temperature [K]
+  double heater_water_T_K = 298.15;   // heating-loop water at the fuel-fired heater's sensor [K]
   double coolant_heat_W = 0.0;        // heat the convectors delivered to the cabin [W]
   double vehicle_speed_m_s = 0.0;
   bool engine_running = true;         // the belt-driven compressor turns

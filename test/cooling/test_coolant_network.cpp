@@ -49,12 +49,15 @@ TEST(CoolantNetwork, EveryImplicitUpdateConservesEnergyToRoundOff) {
   const CoolantNetwork net(shippedCapacities());
   Lcg u;
   const double Ta = celsiusToK(0.0);
-  NetworkState T{Ta, Ta, Ta, Ta, Ta};
+  NetworkState T{Ta, Ta, Ta, Ta, Ta, Ta};
   double worst = 0.0;
   for (int n = 0; n < 20000; ++n) {
     NetworkCoefficients k;
     k.G_mc = u(1e3, 1e4);
     k.G_s = u(0.0, 50.0);
+    k.G_om = u(0.0, 1.0) < 0.2 ? 0.0 : u(0.0, 1e3);
+    k.G_oc = u(10.0, 3e3);
+    k.Q_oil = u(0.0, 20e3);
     k.W_rad = u(0.0, 1.0) < 0.3 ? 0.0 : u(0.0, 2e4);
     k.W_heater = u(0.0, 1.0) < 0.3 ? 0.0 : u(0.0, 5e3);
     k.G_ht = std::min(k.W_rad, u(0.0, 4e3));  // ε C_min <= the coolant's capacity rate
@@ -63,19 +66,22 @@ TEST(CoolantNetwork, EveryImplicitUpdateConservesEnergyToRoundOff) {
     k.q_heater = u(0.0, 1.0) < 0.5 ? u(0.0, 12e3) : 0.0;
     k.g_heater = k.q_heater > 0.0 ? 0.0 : u(0.0, 400.0);
     k.Q_engine = u(-5e3, 120e3);
-    k.Q_aux = u(0.0, 1.0) < 0.2 ? 30e3 : 0.0;
+    k.Q_aux = u(0.0, 1.0) < 0.2 ? 3e3 : 0.0;
+    k.Q_loop = u(0.0, 1.0) < 0.2 ? 30e3 : 0.0;
     k.Q_lt = u(0.0, 8e3);
     const double h = u(0.01, 0.1);
     const NetworkState T0 = T;
     const NetworkFluxes f = net.step(h, Ta, k, T);
-    const double in = k.Q_engine + k.Q_aux + k.Q_lt;
+    const double in = k.Q_engine + k.Q_oil + k.Q_aux + k.Q_loop + k.Q_lt;
     const double out = f.radiator_ht + f.radiator_lt + f.heater + f.surface;
     const double r = h * (in - out) - net.storedSince_J(T, T0);
     worst = std::max(worst, std::abs(r) / (h * 120e3));
     // The exchanges between the volumes are what each volume gained or lost.
     EXPECT_NEAR(net.capacities().radiator * (T.radiator - T0.radiator), h * (f.to_radiator - f.radiator_ht),
                 1e-9 * h * 120e3);
-    EXPECT_NEAR(net.capacities().convector * (T.convector - T0.convector), h * (f.to_convector - f.heater),
+    EXPECT_NEAR(net.capacities().convector * (T.convector - T0.convector), h * (f.to_convector - f.heater + k.Q_loop),
+                1e-9 * h * 120e3);
+    EXPECT_NEAR(net.capacities().oil * (T.oil - T0.oil), h * (k.Q_oil - f.oil_cooler - f.oil_to_metal),
                 1e-9 * h * 120e3);
   }
   std::printf("worst per-step residual: %.3g of the step's 120 kW x h\n", worst);
@@ -90,7 +96,7 @@ TEST(CoolantNetwork, SteadyStateMatchesTheHandSolution) {
   const double Ta = celsiusToK(25.0), Q = 60e3;
   NetworkCoefficients k = closedRamp(Q, 12e3, 2e3);
   k.G_ht = 2e3;
-  NetworkState T{Ta, Ta, Ta, Ta, Ta};
+  NetworkState T{Ta, Ta, Ta, Ta, Ta, Ta};
   for (int n = 0; n < 2000; ++n) net.step(10.0, Ta, k, T);  // 20000 s >> every time constant
   const double th_c = Q / k.G_ht;
   EXPECT_NEAR(T.engine_loop - Ta, th_c, 1e-9 * th_c);
@@ -113,7 +119,7 @@ TEST(CoolantNetwork, VolumesLagARampByTheirResidenceTimeAndTendToOneNode) {
   double previous_gap = 0.0;
   for (double W : {1e3, 1e4, 1e5, 1e6}) {
     NetworkCoefficients k = closedRamp(Q, W, 0.5 * W);
-    NetworkState T{Ta, Ta, Ta, Ta, Ta};
+    NetworkState T{Ta, Ta, Ta, Ta, Ta, Ta};
     const int n = 80000;  // 8000 s: the slowest transient (~190 s at W = 1 kW/K) has died out
     for (int i = 0; i < n; ++i) net.step(h, Ta, k, T);
     const double t = n * h, r = Q / (sumC - C.lt);
@@ -164,15 +170,17 @@ TEST(CoolingModelVolumes, OpenValvesAtLargeFlowBehaveAsOneWellMixedNode) {
   EXPECT_NEAR(o.heater_loop_flow_m3_s, 0.05, 1e-12);
   EXPECT_NEAR(o.heater_J, 1.0 * o.time_s, 1e-6);
   const NetworkCapacities& C = m.capacities();
-  const double C_cool = C.coolantHt(), sumC = C.metal + C_cool, t = o.time_s;
+  const double C_cool = C.coolantHt(), sumC = C.metal + C.oil + C_cool, t = o.time_s;
   const double Q_h = 1.0, r = (in.engine_heat_W - Q_h) / sumC;
   const double W = p.ht.coolant_density_kg_m3 * p.ht.coolant_cp_J_kgK * 0.05;  // both loops [W/K]
-  // The metal leads by what flows through the jacket, (C_cool r + Q_h)/G_mc; the volumes lag by
+  // The metal and the oil lead by what flows through the jacket and the oil cooler, C_cool r + Q_h
+  // (test::rampOffsets); the volumes lag by
   // their residence times C/W (0.3 and 0.5 s) and the convectors also by Q_h/W. The engine
   // outlet is then lag = (C_r C_r r + C_v (C_v r + Q_h))/(W ΣC) = 8 mK above the single 50 L
   // node: the split model is the single node up to the mixing time of its volumes.
-  const double single =
-      T_start + r * t - C.metal * (C_cool * r + Q_h) / (sumC * p.ht.metal_to_coolant_UA_W_K);
+  const test::RampOffsets lead = test::rampOffsets(p.ht.metal_to_coolant_UA_W_K, p.ht.oil_to_metal_UA_W_K,
+                                                   p.ht.oil_cooler_UA_W_K, C.oil, 0.0, r, C_cool * r + Q_h);
+  const double single = T_start + r * t - (C.metal * lead.metal_K + C.oil * lead.oil_K) / sumC;
   const double lag = (C.radiator * C.radiator * r + C.convector * (C.convector * r + Q_h)) / (W * sumC);
   EXPECT_NEAR(o.coolant_ht_T_K - single, lag, 1e-7);
   EXPECT_NEAR(o.coolant_ht_T_K - o.radiator_coolant_T_K, C.radiator * r / W, 1e-7);

@@ -21,7 +21,7 @@ namespace {
 constexpr double kStop_s = 600.0;  // a long stop: 7.2 MJ of cabin demand vs 93 kJ/K of convector water
 
 struct StopResult {
-  double engine_side_J = 0.0;  // Σ C ΔT of metal, engine loop and radiator volume over the stop
+  double engine_side_J = 0.0;  // Σ C ΔT of metal, oil, engine loop and radiator volume over the stop
   double convector_J = 0.0;    // C_v ΔT_v over the stop
   double heater_J = 0.0, surface_J = 0.0, pump_J = 0.0, flow_m3_s = 0.0;
 };
@@ -44,7 +44,8 @@ StopResult warmThenStop(double pump_flow_m3_s) {
   EXPECT_EQ(o.electric_pump_energy_J, 0.0);
   const NetworkCapacities& C = m.capacities();
   const auto engineSide = [&] {
-    return C.metal * o.metal_T_K + C.engine_loop * o.coolant_ht_T_K + C.radiator * o.radiator_coolant_T_K;
+    return C.metal * o.metal_T_K + C.oil * o.oil_T_K + C.engine_loop * o.coolant_ht_T_K +
+           C.radiator * o.radiator_coolant_T_K;
   };
   const double E0 = engineSide(), Tv0 = o.convector_coolant_T_K, H0 = o.heater_J, S0 = o.surface_loss_J;
   CoolingInputs stop;  // engine at rest: no heat, pump standing

@@ -93,10 +93,12 @@ TEST(EngineModel, BothModelsFollowTheSameStartAmbientAndLoopPolicies) {
     in.ambient_T_K = 278.15;
     in.ambient_p_Pa = -1.0;      // none: the standard atmosphere
     in.coolant_T_K = -5.0;       // none
+    in.oil_T_K = -5.0;           // none
     in.back_pressure_Pa = -1.0;  // none
     for (int k = 0; k < 20; ++k) m->step(0.01, in);
     EXPECT_EQ(m->inputs().ambient_p_Pa, 101325.0);
     EXPECT_EQ(m->outputs().coolant_T_K, 0.0);
+    EXPECT_EQ(m->outputs().oil_T_K, 0.0);
     EXPECT_EQ(m->outputs().back_pressure_Pa, 0.0);
     EXPECT_EQ(m->outputs().speed_rad_s, in.speed_rad_s);
     EXPECT_GT(m->outputs().exhaust_T_K, 278.15);  // fired: hotter than the air

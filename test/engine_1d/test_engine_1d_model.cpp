@@ -28,6 +28,7 @@ engine::EngineInputs traceInputs(int k) {
   in.ambient_T_K = 288.15;
   in.ambient_p_Pa = (k % 5 == 0) ? 0.0 : 99000.0;  // 0: the command carries none
   in.coolant_T_K = t < 0.5 ? 0.0 : 300.0;            // 0: no cooling node
+  in.oil_T_K = t < 0.5 ? 0.0 : 295.0;
   in.back_pressure_Pa = (t > 0.7) ? 108000.0 : 0.0;  // 0: no ATS node (own orifice law)
   return in;
 }
@@ -51,6 +52,7 @@ TEST(Engine1DModel, OutputsEqualTheWrappedModelExactlyOnATrace) {
     e.ambient_p_Pa = in.ambient_p_Pa > 0.0 ? in.ambient_p_Pa : 101325.0;
     e.back_pressure_Pa = in.back_pressure_Pa;
     e.coolant_T_K = in.coolant_T_K > 0.0 ? in.coolant_T_K : 363.15;  // the thermostat temperature
+    e.oil_T_K = in.oil_T_K;
     e.fuel_enabled = in.fuel_enabled;
     const engine::EngineOutputs& a = model.step(0.01, in);
     const Engine1DOutputs& b = ref.step(0.01, e);
@@ -85,9 +87,12 @@ TEST(Engine1DModel, OutputsEqualTheWrappedModelExactlyOnATrace) {
     ASSERT_EQ(a.nox_mass_kg, b.nox_mass_kg);
     ASSERT_EQ(a.heat_to_coolant_W, b.coolant_heat_W);
     ASSERT_EQ(a.heat_to_coolant_J, b.coolant_heat_J);
+    ASSERT_EQ(a.heat_to_oil_W, b.oil_heat_W);
+    ASSERT_EQ(a.heat_to_oil_J, b.oil_heat_J);
     ASSERT_EQ(a.friction_correction_Nm, 0.0);  // inside the cycle simulation
     ASSERT_EQ(a.pumping_correction_Nm, 0.0);
     ASSERT_EQ(a.coolant_T_K, in.coolant_T_K);  // echoed as given (0 = none)
+    ASSERT_EQ(a.oil_T_K, in.oil_T_K);
     ASSERT_EQ(a.back_pressure_Pa, in.back_pressure_Pa);
   }
   EXPECT_GT(ref.outputs().fuel_mass_kg, 0.0);

@@ -235,13 +235,13 @@ TEST(MapEngine, ColdOilAndBackPressureCostFuelAsDocumented) {
   // oil and of a back-pressure above the map's reference, each against its formula by hand.
   MapEngineParams p;
   const double w = units::rpmToRadps(1200.0), T = 400.0, dt = 0.01;
-  auto run = [&](double coolant_K, double back_Pa) {
+  auto run = [&](double oil_K, double back_Pa) {
     MapEngine e{p};
     e.reset(w, T);
     MapEngineInputs in;
     in.speed_rad_s = w;
     in.torque_request_Nm = T;
-    in.coolant_T_K = coolant_K;
+    in.oil_T_K = oil_K;
     in.back_pressure_Pa = back_Pa;
     for (int k = 0; k < 300; ++k) e.step(dt, in);
     return e.outputs();
@@ -250,14 +250,14 @@ TEST(MapEngine, ColdOilAndBackPressureCostFuelAsDocumented) {
   EXPECT_DOUBLE_EQ(warm.friction_correction_Nm, 0.0);
   EXPECT_DOUBLE_EQ(warm.pumping_correction_Nm, 0.0);
   // Oil at its reference temperature: no correction, the warm map's fuel.
-  const auto ref = run(p.oil_ref_K - p.oil_minus_coolant_K, 0.0);
+  const auto ref = run(p.oil_ref_K, 0.0);
   EXPECT_NEAR(ref.friction_correction_Nm, 0.0, 1e-12);
   EXPECT_DOUBLE_EQ(ref.fuel_mass_flow_kg_s, warm.fuel_mass_flow_kg_s);
-  // Coolant at 25 degC: Vogel viscosity ratio by hand.
-  const double Toil = 298.15 + 5.0;
+  // Oil at 30 degC: Vogel viscosity ratio by hand.
+  const double Toil = 303.15;
   const double phi = std::pow(std::exp(1170.0 / (Toil - 150.0) - 1170.0 / (363.15 - 150.0)), 0.25);
   const double dT = 0.75 * std::fabs(engine().motoringTorque(w)) * (phi - 1.0);
-  const auto cold = run(298.15, 0.0);
+  const auto cold = run(Toil, 0.0);
   EXPECT_GT(phi, 1.5);
   EXPECT_NEAR(cold.friction_correction_Nm, dT, 1e-9 * dT);
   EXPECT_DOUBLE_EQ(cold.brake_torque_Nm, T);  // the driver still gets the torque asked for
@@ -271,7 +271,7 @@ TEST(MapEngine, ColdOilAndBackPressureCostFuelAsDocumented) {
   const double x_r = computeGasPath(p.gas, w_r, rated.fullLoadTorque(w_r), 1.0,
                                     rated.steadyFuel(w_r, rated.fullLoadTorque(w_r)),
                                     rated.steadyFuel(w_r, rated.fullLoadTorque(w_r)), 298.15,
-                                    101325.0).exhaust_mass_flow_kg_s;
+                                    101325.0, 0.0, 0.0).exhaust_mass_flow_kg_s;
   const double p_ref = 101325.0 + p.back_pressure_ref_rated_Pa * std::pow(x / x_r, p.back_pressure_ref_exponent);
   const auto bp = run(0.0, p_ref + 20000.0);
   const double dT_pump = 20000.0 * warm.gas.pressure_ratio * p.gas.displacement_m3 / (4.0 * units::kPi);

@@ -37,6 +37,7 @@ engine::EngineInputs traceInputs(int k) {
   in.ambient_T_K = 273.15 + 5.0 + t;
   in.ambient_p_Pa = (k % 7 == 0) ? 0.0 : 98000.0 + 10.0 * k;  // 0: the command carries none
   in.coolant_T_K = t < 3.0 ? 0.0 : 280.0 + 10.0 * t;          // 0: no cooling node
+  in.oil_T_K = t < 3.0 ? 0.0 : 283.0 + 10.0 * t;
   in.back_pressure_Pa = (t > 1.5 && t < 6.0) ? 104000.0 + 1000.0 * t : 0.0;  // 0: no ATS node
   return in;
 }
@@ -58,7 +59,7 @@ TEST(MapEngineModel, OutputsEqualTheWrappedModelExactlyOnATrace) {
     m.ambient_T_K = in.ambient_T_K;
     m.ambient_p_Pa = in.ambient_p_Pa > 0.0 ? in.ambient_p_Pa : 101325.0;
     m.fuel_enabled = in.fuel_enabled;
-    m.coolant_T_K = in.coolant_T_K;
+    m.oil_T_K = in.oil_T_K;
     m.back_pressure_Pa = in.back_pressure_Pa;
     const engine::EngineOutputs& a = model.step(0.01, in);
     const MapEngineOutputs& b = ref.step(0.01, m);
@@ -85,11 +86,15 @@ TEST(MapEngineModel, OutputsEqualTheWrappedModelExactlyOnATrace) {
     ASSERT_EQ(a.y_N2, b.gas.comp.y_N2);
     ASSERT_EQ(a.nox_mass_flow_kg_s, b.gas.nox_mass_flow_kg_s);
     ASSERT_EQ(a.nox_mass_kg, b.nox_mass_kg);
-    ASSERT_EQ(a.heat_to_coolant_W, b.gas.coolant_heat_W);
-    ASSERT_EQ(a.heat_to_coolant_J, b.coolant_heat_J);
+    ASSERT_EQ(a.heat_to_coolant_W, b.gas.metal_heat_W);
+    ASSERT_EQ(a.heat_to_coolant_J, b.metal_heat_J);
+    ASSERT_EQ(a.heat_to_oil_W, b.gas.oil_heat_W);
+    ASSERT_EQ(a.heat_to_oil_J, b.oil_heat_J);
+    ASSERT_EQ(a.friction_W, b.gas.friction_W);
     ASSERT_EQ(a.friction_correction_Nm, b.friction_correction_Nm);
     ASSERT_EQ(a.pumping_correction_Nm, b.pumping_correction_Nm);
     ASSERT_EQ(a.coolant_T_K, in.coolant_T_K);         // echoed as used (0 = none)
+    ASSERT_EQ(a.oil_T_K, in.oil_T_K);
     ASSERT_EQ(a.back_pressure_Pa, in.back_pressure_Pa);
     ASSERT_EQ(a.turbo_speed_rad_s, 0.0);              // no turbocharger in this model
   }

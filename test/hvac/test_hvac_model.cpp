@@ -19,8 +19,8 @@ TEST(HvacModel, ColdHourClosesTheCabinBalanceAndBooksTheHeaterFuel) {
   HvacInputs in;
   in.ambient_T_K = 273.15;
   for (int i = 0; i < 36000; ++i) {
-    in.coolant_T_K = 273.15 + std::min(85.0, i * 0.004);  // the coolant warming over ~6 h
-    in.coolant_heat_W = m.outputs().heating_demand_W * (in.coolant_T_K > 313.15 ? 1.0 : 0.0);
+    in.heater_water_T_K = 273.15 + std::min(85.0, i * 0.004);  // the coolant warming over ~6 h
+    in.coolant_heat_W = m.outputs().heating_demand_W * (in.heater_water_T_K > 313.15 ? 1.0 : 0.0);
     in.vehicle_speed_m_s = (i / 200) % 3 == 0 ? 0.0 : 8.0;  // standing 20 s of every 60 s
     m.step(0.1, in);
   }
@@ -38,7 +38,7 @@ TEST(HvacModel, HotAmbientCoolsOnlyWithTheEngineRunning) {
   m.reset(313.15);
   HvacInputs in;
   in.ambient_T_K = 313.15;
-  in.coolant_T_K = 358.15;
+  in.heater_water_T_K = 358.15;
   in.vehicle_speed_m_s = 8.0;
   for (int i = 0; i < 36000; ++i) m.step(0.1, in);
   const HvacOutputs& o = m.outputs();
@@ -80,12 +80,12 @@ TEST(HvacModel, BadInputNamed) {
   }
   HvacModel m(test::yamlParams(), 1500.0, "config/hvac.yaml");
   HvacInputs in;
-  in.coolant_T_K = std::nan("");
+  in.heater_water_T_K = std::nan("");
   try {
     m.step(0.1, in);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("coolant_T_K"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("heater_water_T_K"), std::string::npos) << e.what();
   }
   HvacParams q;
   ParamSet ps;

@@ -24,6 +24,18 @@ class StudyKeys(unittest.TestCase):
         self.assertAlmostEqual(thermal.first_time_at_or_above(t, x, 343.15), 70.0, places=9)
         self.assertIsNone(thermal.first_time_at_or_above(t, x, 400.0))
 
+    def test_oil_warm_time_and_oil_heat_in_the_cooling_balance(self):
+        t = np.arange(0.0, 200.0, 0.1)
+        n = len(t)
+        cool = {"t": t, "oil_temperature_k": 273.15 + t,  # 1 K/s from 0 degC: 80 degC at t = 80 s
+                "coolant_ht_temperature_k": np.full(n, 300.0), "warmup_time_s": np.full(n, -1.0),
+                "fan_drive_energy_j": np.zeros(n), "pump_energy_j": np.zeros(n),
+                "engine_heat_j": np.full(n, 3.0e6), "engine_oil_heat_j": np.full(n, 1.0e6),
+                "lt_heat_j": np.zeros(n), "energy_residual_j": np.full(n, 4.0)}
+        s = thermal.thermal_summary({thermal.COOLING_STATE: cool})
+        self.assertAlmostEqual(s["oil_80c_s"], thermal.OIL_WARM_K - 273.15, places=9)
+        self.assertAlmostEqual(s["cooling_balance_closure"], 4.0 / 4.0e6, places=15)  # metal + oil heat in
+
     def test_standstill_scr_mean_and_min(self):
         t = np.arange(0.0, 40.0, 0.1)
         ats = {"t": t, "scr_temperature_k": 500.0 - t}  # cools at 1 K/s

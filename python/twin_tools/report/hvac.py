@@ -85,7 +85,7 @@ def hvac_ledger(data):
 # (ledger key, label) of the HVAC rows of the ledger table
 LEDGER_ROWS = [
     ("heater_fuel_chemical", "fuel-fired heater: fuel chemical energy"),
-    ("heater_heat_to_coolant", "  of which heat into the HT coolant"),
+    ("heater_heat_to_coolant", "  of which heat into the heating loop (HT coolant of the convectors)"),
     ("heater_flue_loss", "  of which flue gas loss"),
     ("hvac_compressor", "A/C compressor shaft work"),
     ("hvac_electric", "HVAC electric energy (blowers, condenser fans, burner)"),

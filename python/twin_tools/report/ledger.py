@@ -93,13 +93,15 @@ def energy_ledger(data):
     fuel_J = _last(eng, "fuel_mass_kg") * DIESEL_LHV_J_KG
     pos_J, mot_J = _last(eng, "positive_work_j"), _last(eng, "motoring_work_j")
     net_J = pos_J + mot_J
-    coolant_J = _last(heat, "heat_to_coolant_j")
+    coolant_J = _last(heat, "heat_to_coolant_j")  # into the metal, on to the coolant
+    oil_J = _last(heat, "heat_to_oil_j")  # friction heat into the oil, on through the oil cooler
     L["fuel_chemical"] = fuel_J
     L["engine_positive"] = pos_J
     L["engine_motoring"] = mot_J
     L["engine_net"] = net_J
-    L["engine_heat_to_coolant"] = coolant_J
-    L["engine_exhaust_and_other"] = fuel_J - net_J - coolant_J
+    L["engine_heat_to_coolant"] = coolant_J + oil_J
+    L["engine_heat_to_oil"] = oil_J
+    L["engine_exhaust_and_other"] = fuel_J - net_J - coolant_J - oil_J
     crank_engine_J = _last(veh, "engine_work_j")
     L["crank_engine"] = crank_engine_J
     L["crank_em"] = _last(veh, "em_work_j")
@@ -184,7 +186,8 @@ def ledger_table(L):
     fuel = L["fuel_chemical"]
     pct = (lambda x: "%.1f" % (100.0 * x / fuel)) if fuel > 0 else (lambda x: "")
     rows = [("engine fuel chemical energy (LHV %.1f MJ/kg)" % (DIESEL_LHV_J_KG / 1e6), "fuel_chemical"),
-            ("engine heat to coolant", "engine_heat_to_coolant"),
+            ("engine heat to the cooling (metal and oil, on to the coolant)", "engine_heat_to_coolant"),
+            ("  of which friction heat into the oil", "engine_heat_to_oil"),
             ("engine exhaust and other losses", "engine_exhaust_and_other"),
             ("engine brake work, net", "engine_net"),
             ("  of which positive", "engine_positive"),

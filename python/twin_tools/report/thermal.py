@@ -33,6 +33,11 @@ J_PER_KWH = 3.6e6
 STANDSTILL_M_S = 0.01  # the bus stands below this speed [m/s]
 
 
+# Engine oil "warm" for the summary's oil_80c_s: 80 degC, where the cold-oil friction factor of
+# the engines' Vogel law (config/engine_map.yaml) is down to 1.07 of the warm map's at 90 degC.
+OIL_WARM_K = 353.15
+
+
 def coolant_warm_K():
     """The EMS's warm threshold of the HT coolant [K] (config/ems.yaml warmup/coolant_warm_K)."""
     with open(os.path.join(REPO, "config", "ems.yaml")) as f:
@@ -79,7 +84,13 @@ def thermal_summary(data):
         warm = first_time_at_or_above(cool["t"], cool["coolant_ht_temperature_k"], coolant_warm_K())
         if warm is not None:
             s["coolant_warm_s"] = warm
+        if "oil_temperature_k" in cool:  # the engine oil node: first time at 80 degC
+            oil = first_time_at_or_above(cool["t"], cool["oil_temperature_k"], OIL_WARM_K)
+            if oil is not None:
+                s["oil_80c_s"] = oil
         heat_in = float(cool["engine_heat_j"][-1] + cool["lt_heat_j"][-1])
+        if "engine_oil_heat_j" in cool:  # the engine's friction heat into its oil
+            heat_in += float(cool["engine_oil_heat_j"][-1])
         if "aux_heater_j" in cool:  # the fuel-fired heater's heat (hvac:=on)
             heat_in += float(cool["aux_heater_j"][-1])
         if heat_in > 0:
@@ -126,6 +137,8 @@ def thermal_plots(data, save, plt):
         if cool is not None:
             ax.plot(cool["t"], cool["coolant_ht_temperature_k"] - 273.15, lw=0.9, label="HT coolant (engine outlet)")
             ax.plot(cool["t"], cool["metal_temperature_k"] - 273.15, lw=0.9, label="engine metal")
+            if "oil_temperature_k" in cool:
+                ax.plot(cool["t"], cool["oil_temperature_k"] - 273.15, lw=0.9, label="engine oil")
             for f, lab in (("radiator_coolant_temperature_k", "radiator volume"),
                            ("convector_coolant_temperature_k", "convector volume")):
                 if f in cool:  # the HT coolant volumes (src/cooling/coolant_network.hpp)

@@ -19,9 +19,9 @@ void CoolingParticipant::configure() {
   model_ = std::make_unique<CoolingModel>(p, configFile());
   if (cosim::scenarioWarmStart(nh_))  // a bus mid-shift: warm_start/ of config/cooling.yaml
     model_->reset(ambient_T_K_, p.warm_start.metal_K, p.warm_start.coolant_ht_K,
-                  ambient_T_K_ + p.warm_start.coolant_lt_above_ambient_K);
+                  ambient_T_K_ + p.warm_start.coolant_lt_above_ambient_K, p.warm_start.oil_K);
   else
-    model_->reset(ambient_T_K_);  // cold start: metal, HT and LT coolant at ambient
+    model_->reset(ambient_T_K_);  // cold start: metal, oil, HT and LT coolant at ambient
   last_in_.ambient_T_K = ambient_T_K_;
   last_in_.ambient_p_Pa = ambient_p_Pa_;
   heat_ = &addInputFrom<hybrid_bus_twin::EngineHeat>("engine", "heat");
@@ -60,9 +60,11 @@ void CoolingParticipant::step(const ros::Time& t, double dt_s) {
   const auto& v = vehicle_->at(t);
   CoolingTotals now;  // cumulative since t = 0: their step means (step_inputs.hpp)
   now.engine_heat_J = h.heat_to_coolant_j;
+  now.engine_oil_heat_J = h.heat_to_oil_j;
   now.pump_angle_rad = h.coolant_pump_angle_rad;
   CoolingInputs point;  // the sample's own values: the first step and what is not averaged
   point.engine_heat_W = h.heat_to_coolant_w;
+  point.engine_oil_heat_W = h.heat_to_oil_w;
   point.pump_speed_rad_s = h.coolant_pump_speed_rad_s;
   point.vehicle_speed_m_s = v.vehicle_speed_m_s;
   point.ambient_T_K = v.ambient_temperature_k > 0.0 ? v.ambient_temperature_k : ambient_T_K_;
@@ -101,6 +103,8 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.pump_power_w = o.pump_power_W;
   s.lt_pump_speed_rad_s = o.lt_pump_speed_rad_s;
   s.metal_temperature_k = o.metal_T_K;
+  s.oil_temperature_k = o.oil_T_K;
+  s.oil_cooler_heat_w = o.oil_cooler_heat_W;
   s.ht_air_in_temperature_k = o.ht_air_in_T_K;
   s.fan_drive_power_w = o.fan_drive_power_W;
   s.fan_engagement = o.fan_engagement;
@@ -117,6 +121,7 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.aux_heater_heat_w = o.aux_heater_heat_W;
   s.surface_loss_w = o.surface_loss_W;
   s.engine_heat_w = last_in_.engine_heat_W;
+  s.engine_oil_heat_w = last_in_.engine_oil_heat_W;
   s.lt_heat_w = last_in_.lt_heat_W;
   s.em_engine_heat_w = last_in_.em_engine_heat_W;
   s.fan_energy_j = o.fan_energy_J;
@@ -124,6 +129,8 @@ void CoolingParticipant::publishOutputs(const ros::Time& t) {
   s.pump_energy_j = o.pump_energy_J;
   s.lt_pump_energy_j = o.lt_pump_energy_J;
   s.engine_heat_j = o.engine_heat_J;
+  s.engine_oil_heat_j = o.engine_oil_heat_J;
+  s.oil_cooler_heat_j = o.oil_cooler_J;
   s.lt_heat_j = o.lt_heat_J;
   s.em_engine_heat_j = o.em_engine_heat_J;
   s.radiator_ht_j = o.radiator_ht_J;

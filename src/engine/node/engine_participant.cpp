@@ -54,6 +54,7 @@ void EngineParticipant::step(const ros::Time& t, double dt_s) {
   in.ambient_p_Pa = cmd.ambient_pressure_pa;  // <= 0: the standard atmosphere (EngineModel::step)
   in.fuel_enabled = cmd.engine_on;
   in.coolant_T_K = loops_.coolantAt(t);           // 0 = no cooling node
+  in.oil_T_K = loops_.oilAt(t);                   // 0 = no cooling node
   in.back_pressure_Pa = loops_.backPressureAt(t);  // 0 = no aftertreatment node
   model_->step(dt_s, in);
 }

@@ -16,7 +16,7 @@
 
 namespace hbt::engine {
 
-/// The engine's closed loops with the thermal nodes: coolant temperature from /cooling/state and
+/// The engine's closed loops with the thermal nodes: coolant and oil temperature from /cooling/state and
 /// turbine-outlet back-pressure from /aftertreatment/state, each read (stamped t_k) only when the
 /// scenario runs that participant. Without them 0 = none (the model's own defaults).
 struct EngineLoopInputs {
@@ -24,6 +24,9 @@ struct EngineLoopInputs {
   cosim::Input<hybrid_bus_twin::AftertreatmentState>* aftertreatment = nullptr;
   double coolantAt(const ros::Time& t) const {
     return cooling ? cooling->at(t).coolant_ht_temperature_k : 0.0;
+  }
+  double oilAt(const ros::Time& t) const {
+    return cooling ? cooling->at(t).oil_temperature_k : 0.0;
   }
   double backPressureAt(const ros::Time& t) const {
     return aftertreatment ? aftertreatment->at(t).back_pressure_pa : 0.0;
@@ -53,6 +56,7 @@ class EnginePorts {
     s.turbo_speed_rad_s = v.turbo_speed_rad_s;
     s.lambda = v.lambda;
     s.coolant_temperature_k = v.coolant_T_K;
+    s.oil_temperature_k = v.oil_T_K;
     s.back_pressure_pa = v.back_pressure_Pa;
     s.friction_correction_nm = v.friction_correction_Nm;
     s.pumping_correction_nm = v.pumping_correction_Nm;
@@ -78,6 +82,8 @@ class EnginePorts {
     h.header.stamp = t;
     h.heat_to_coolant_w = v.heat_to_coolant_W;
     h.heat_to_coolant_j = v.heat_to_coolant_J;
+    h.heat_to_oil_w = v.heat_to_oil_W;
+    h.heat_to_oil_j = v.heat_to_oil_J;
     h.coolant_pump_speed_rad_s = v.speed_rad_s;  // mechanical pump driven 1:1 by the crank
     h.coolant_pump_angle_rad = v.crank_angle_rad;
     heat_.publish(boost::make_shared<hybrid_bus_twin::EngineHeat>(h));

@@ -36,7 +36,8 @@ void HvacParticipant::step(const ros::Time& t, double dt_s) {
   HvacInputs in;
   in.ambient_T_K = ambient_T_K_;
   in.ambient_p_Pa = ambient_p_Pa_;
-  in.coolant_T_K = c.coolant_ht_temperature_k;
+  in.heater_water_T_K = AuxHeater::waterAtHeater(c.coolant_ht_temperature_k, c.convector_coolant_temperature_k,
+                                                 c.heater_valve_open && c.heater_loop_flow_m3_s > 0.0);
   // the convectors' heat: the exact mean of cooling's steps since our last sample (its total)
   in.coolant_heat_W = started_ ? (c.heater_j - prev_heater_J_) / dt_s : c.heater_heat_w;
   prev_heater_J_ = c.heater_j;
