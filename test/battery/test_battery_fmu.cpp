@@ -9,45 +9,24 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "battery/battery_io.hpp"
 #include "battery/battery_model.hpp"
 #include "battery_fmu_variables.hpp"  // generated: the FMU's variables by value reference
-#include "common/params.hpp"
 #include "common/units.hpp"
-#include "common/yaml_params.hpp"
+#include "exported_fmu_test_util.hpp"
 #include "fmi/cs_instance.hpp"
-#include "fmi/fmu_error.hpp"
 #include "fmi/message_layout.hpp"
 
 namespace hbt::battery {
 namespace {
 
-namespace fs = std::filesystem;
 using fmi::VarType;
 
-std::string freshDir(const std::string& tag) {
-  const fs::path dir = fs::temp_directory_path() / ("hbt_battery_fmu_" + std::to_string(::getpid()) + "_" + tag);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-std::shared_ptr<const fmi::LoadedFmu> load(const std::string& dir) {
-  return fmi::LoadedFmu::load(std::string(HBT_FMU_DIR) + "/battery.fmu", dir, fmi::InterfaceType::kCoSimulation);
-}
-
-BatteryModel nativeModel() {  // the library with config/battery.yaml as the node reads it
-  BatteryParams p;
-  ParamSet ps;
-  p.declare(ps);
-  applyParams(ps, readYamlParams("config/battery.yaml"), {"cosim/", "diagnostics/"});
-  return BatteryModel(p, "config/battery.yaml");
+BatteryModel nativeModel() {  // the library with config/battery.yaml as the FMU reads it
+  return BatteryModel(fmi::exported::readResourceParams<BatteryParams>("config/battery.yaml"), "config/battery.yaml");
 }
 
 struct Drive {  // inputs of step k: e-machine DC power [W], DC/DC load [W], vehicle speed [m/s]
@@ -78,14 +57,11 @@ struct Fmu {
 };
 
 TEST(BatteryFmu, EveryOutputBitIdenticalToTheLibraryOverADriveCycle) {
-  auto loaded = load(freshDir("cycle"));
+  auto loaded = fmi::testing::loadExported("battery", "cycle");
   Fmu fmu(loaded);
   fmi::CsInstance& f = fmu.inst;
   const double ambient_c = 0.0;
-  f.setupExperiment(1e-6, 0.0, 100.0);
-  f.setReal(f.settable("scenario.ambient_temperature_c", VarType::kReal), ambient_c);
-  f.enterInitializationMode();
-  f.exitInitializationMode();
+  fmi::testing::initializeAtAmbient(f, ambient_c);
   BatteryModel native = nativeModel();
   const double air_T_K = units::celsiusToK(ambient_c);
   native.reset(air_T_K);
@@ -101,9 +77,7 @@ TEST(BatteryFmu, EveryOutputBitIdenticalToTheLibraryOverADriveCycle) {
   const auto dcdc_out = f.gettable("battery.state.dcdc_power_w", VarType::kReal);
   const auto residual = f.gettable("battery.state.energy_residual_j", VarType::kReal);
   EXPECT_EQ(f.getReal(soc), native.outputs().soc);  // initial state, before any step
-  std::vector<fmi::VariableRef> outputs;  // every output, by name from modelDescription.xml
-  for (const auto& var : loaded->modelDescription().variables())
-    if (var.causality == fmi::Causality::kOutput) outputs.push_back(f.gettable(var.name, var.type));
+  const std::vector<fmi::VariableRef> outputs = fmi::testing::outputRefs(f, *loaded);  // by name
   ASSERT_EQ(outputs.size(), 40u);
   int limited_steps = 0;
   for (int k = 0; k < 3000; ++k) {
@@ -144,7 +118,7 @@ TEST(BatteryFmu, EveryOutputBitIdenticalToTheLibraryOverADriveCycle) {
 }
 
 TEST(BatteryFmu, EveryOutputOfTheMessageIsAnOutputWithTheFieldsUnit) {
-  auto loaded = load(freshDir("units"));
+  auto loaded = fmi::testing::loadExported("battery", "units");
   const fmi::ModelDescription& md = loaded->modelDescription();
   int outputs = 0;
   for (const auto& var : md.variables()) outputs += var.causality == fmi::Causality::kOutput ? 1 : 0;
@@ -157,26 +131,9 @@ TEST(BatteryFmu, EveryOutputOfTheMessageIsAnOutputWithTheFieldsUnit) {
   EXPECT_EQ(md.defaultExperiment().step_size_s.value_or(0.0), 0.01);  // cosim/macro_step_s
 }
 
-void expectRefusedNaming(const std::string& tag, const std::string& resource) {
-  auto loaded = load(freshDir(tag));
-  for (const auto& e : fs::directory_iterator(fs::path(loaded->directory()) / "resources"))
-    if (e.path().filename().string().find(resource) != std::string::npos) fs::remove(e.path());
-  std::vector<std::string> log;
-  try {
-    fmi::CsInstance inst(loaded, "battery", [&](const std::string&, fmi2Status, const std::string&, const std::string& m) {
-      log.push_back(m);
-    });
-    ADD_FAILURE() << "instantiated without " << resource;
-  } catch (const fmi::FmuError& e) {
-    EXPECT_NE(std::string(e.what()).find("returned NULL"), std::string::npos) << e.what();
-  }
-  ASSERT_EQ(log.size(), 1u);
-  EXPECT_NE(log[0].find(resource), std::string::npos) << log[0];
-}
-
-TEST(BatteryFmu, MissingYamlRefusesInstantiationNamingTheFile) { expectRefusedNaming("yaml", "battery.yaml"); }
+TEST(BatteryFmu, MissingYamlRefusesInstantiationNamingTheFile) { fmi::testing::expectInstantiationRefusedWithout("battery", "battery.yaml"); }
 TEST(BatteryFmu, MissingCellTableRefusesInstantiationNamingTheFile) {
-  expectRefusedNaming("table", "ecm_1RC_SOC_T_lookup.csv");
+  fmi::testing::expectInstantiationRefusedWithout("battery", "ecm_1RC_SOC_T_lookup.csv");
 }
 
 }  // namespace

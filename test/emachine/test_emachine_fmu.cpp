@@ -11,44 +11,23 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
-#include "common/params.hpp"
 #include "common/units.hpp"
-#include "common/yaml_params.hpp"
 #include "emachine/emachine_io.hpp"
 #include "emachine/emachine_model.hpp"
 #include "emachine_fmu_variables.hpp"  // generated: the FMU's variables by value reference
+#include "exported_fmu_test_util.hpp"
 #include "fmi/cs_instance.hpp"
-#include "fmi/fmu_error.hpp"
 
 namespace hbt::emachine {
 namespace {
 
-namespace fs = std::filesystem;
 using fmi::VarType;
 
-std::string freshDir(const std::string& tag) {
-  const fs::path dir = fs::temp_directory_path() / ("hbt_emachine_fmu_" + std::to_string(::getpid()) + "_" + tag);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-std::shared_ptr<const fmi::LoadedFmu> load(const std::string& dir) {
-  return fmi::LoadedFmu::load(std::string(HBT_FMU_DIR) + "/emachine.fmu", dir, fmi::InterfaceType::kCoSimulation);
-}
-
-EMachineModel nativeModel() {  // the library with config/emachine.yaml as the node reads it
-  EMachineParams p;
-  ParamSet ps;
-  p.declare(ps);
-  applyParams(ps, readYamlParams("config/emachine.yaml"), {"cosim/", "diagnostics/"});
-  return EMachineModel(p, "config/emachine.yaml");
+EMachineModel nativeModel() {  // the library with config/emachine.yaml as the FMU reads it
+  return EMachineModel(fmi::exported::readResourceParams<EMachineParams>("config/emachine.yaml"), "config/emachine.yaml");
 }
 
 struct Inputs {  // one step's messages, by the fields emachine_io.hpp reads
@@ -76,21 +55,16 @@ class NativeVariables : public fmi::exported::generated::VariablesModel {
 };
 
 void runAgainstLibrary(bool with_cooling) {
-  auto loaded = load(freshDir(with_cooling ? "cooling" : "ambient"));
+  auto loaded = fmi::testing::loadExported("emachine", with_cooling ? "cooling" : "ambient");
   std::vector<std::string> log;
   fmi::CsInstance f(loaded, "emachine", [&](const std::string&, fmi2Status, const std::string&, const std::string& m) {
     log.push_back(m);
   });
   const double ambient_c = 0.0, ambient_K = units::celsiusToK(ambient_c);
-  f.setupExperiment(1e-6, 0.0, 100.0);
-  f.setReal(f.settable("scenario.ambient_temperature_c", VarType::kReal), ambient_c);
-  f.enterInitializationMode();
-  f.exitInitializationMode();
+  fmi::testing::initializeAtAmbient(f, ambient_c);
   EMachineModel native = nativeModel();
   native.reset(ambient_K);
-  std::vector<fmi::VariableRef> outputs;
-  for (const auto& var : loaded->modelDescription().variables())
-    if (var.causality == fmi::Causality::kOutput) outputs.push_back(f.gettable(var.name, var.type));
+  const std::vector<fmi::VariableRef> outputs = fmi::testing::outputRefs(f, *loaded);  // by name
   const auto T = f.settable("ems.command.em_torque_request_nm", VarType::kReal);
   const auto w = f.settable("ems.command.engine_speed_rad_s", VarType::kReal);
   const auto V = f.settable("battery.state.terminal_voltage_v", VarType::kReal);
@@ -124,25 +98,8 @@ void runAgainstLibrary(bool with_cooling) {
 TEST(EMachineFmu, EveryOutputBitIdenticalToTheLibraryWithCoolingInputs) { runAgainstLibrary(true); }
 TEST(EMachineFmu, EveryOutputBitIdenticalToTheLibraryWithoutCoolingAtAmbient) { runAgainstLibrary(false); }
 
-void expectRefusedNaming(const std::string& tag, const std::string& resource) {
-  auto loaded = load(freshDir(tag));
-  for (const auto& e : fs::directory_iterator(fs::path(loaded->directory()) / "resources"))
-    if (e.path().filename().string().find(resource) != std::string::npos) fs::remove(e.path());
-  std::vector<std::string> log;
-  try {
-    fmi::CsInstance inst(loaded, "emachine", [&](const std::string&, fmi2Status, const std::string&, const std::string& m) {
-      log.push_back(m);
-    });
-    ADD_FAILURE() << "instantiated without " << resource;
-  } catch (const fmi::FmuError& e) {
-    EXPECT_NE(std::string(e.what()).find("returned NULL"), std::string::npos) << e.what();
-  }
-  ASSERT_EQ(log.size(), 1u);
-  EXPECT_NE(log[0].find(resource), std::string::npos) << log[0];
-}
-
-TEST(EMachineFmu, MissingYamlRefusesInstantiationNamingTheFile) { expectRefusedNaming("yaml", "emachine.yaml"); }
-TEST(EMachineFmu, MissingVempRefusesInstantiationNamingTheFile) { expectRefusedNaming("vemp", ".vemp"); }
+TEST(EMachineFmu, MissingYamlRefusesInstantiationNamingTheFile) { fmi::testing::expectInstantiationRefusedWithout("emachine", "emachine.yaml"); }
+TEST(EMachineFmu, MissingVempRefusesInstantiationNamingTheFile) { fmi::testing::expectInstantiationRefusedWithout("emachine", ".vemp"); }
 
 }  // namespace
 }  // namespace hbt::emachine

@@ -4,28 +4,22 @@
 // the step -> batteryInputs -> BatteryModel::step(h) -> writeBatteryState (battery_io.hpp, the
 // one conversion both use). The parameters come from resources/battery.yaml (the pack of that
 // file; its cell/table_file is read from resources/ under its own file name).
-#include <filesystem>
 #include <memory>
 
 #include "battery/battery_io.hpp"
 #include "battery/battery_model.hpp"
 #include "battery_fmu_variables.hpp"
-#include "common/params.hpp"
 #include "common/units.hpp"
-#include "common/yaml_params.hpp"
+#include "fmi/export/resource_params.hpp"
 
 namespace hbt::fmi::exported {
 namespace {
 
 class BatteryFmu : public generated::VariablesModel {
  public:
-  explicit BatteryFmu(const std::string& resources_dir) : file_(resources_dir + "/battery.yaml") {
-    ParamSet ps;
-    p_.declare(ps);
-    const ParamSource src = readYamlParams(file_);
-    applyParams(ps, src, {"cosim/", "diagnostics/"});  // the node's keys (cosim::nodeKeyPrefixes)
-    requireKeys(ps, src);
-    p_.cell.table_file = resources_dir + "/" + std::filesystem::path(p_.cell.table_file).filename().string();
+  explicit BatteryFmu(const std::string& resources_dir)
+      : file_(resources_dir + "/battery.yaml"), p_(readResourceParams<battery::BatteryParams>(file_)) {
+    p_.cell.table_file = resourceFile(resources_dir, p_.cell.table_file);
     model_ = std::make_unique<battery::BatteryModel>(p_, file_);  // reads and checks the cell table
   }
 

@@ -5,12 +5,10 @@
 // one conversion both use). The cooling inputs start at the ambient, as the node's coolant
 // without a cooling participant. Parameters: resources/emachine.yaml; its data/vemp_file is read
 // from resources/ under its own file name.
-#include <filesystem>
 #include <memory>
 
-#include "common/params.hpp"
 #include "common/units.hpp"
-#include "common/yaml_params.hpp"
+#include "fmi/export/resource_params.hpp"
 #include "emachine/emachine_io.hpp"
 #include "emachine/emachine_model.hpp"
 #include "emachine_fmu_variables.hpp"
@@ -20,13 +18,9 @@ namespace {
 
 class EMachineFmu : public generated::VariablesModel {
  public:
-  explicit EMachineFmu(const std::string& resources_dir) : file_(resources_dir + "/emachine.yaml") {
-    ParamSet ps;
-    p_.declare(ps);
-    const ParamSource src = readYamlParams(file_);
-    applyParams(ps, src, {"cosim/", "diagnostics/"});  // the node's keys (cosim::nodeKeyPrefixes)
-    requireKeys(ps, src);
-    p_.data.vemp_file = resources_dir + "/" + std::filesystem::path(p_.data.vemp_file).filename().string();
+  explicit EMachineFmu(const std::string& resources_dir)
+      : file_(resources_dir + "/emachine.yaml"), p_(readResourceParams<emachine::EMachineParams>(file_)) {
+    p_.data.vemp_file = resourceFile(resources_dir, p_.data.vemp_file);
     model_ = std::make_unique<emachine::EMachineModel>(p_, file_);  // reads and checks the .vemp
   }
 
