@@ -17,12 +17,26 @@
 
 namespace hbt::fmi::testing {
 
+/// The paths made in this process, removed after the last test.
+class ExportTestPaths : public ::testing::Environment {
+ public:
+  static std::vector<std::filesystem::path>& made() {
+    static std::vector<std::filesystem::path> paths;
+    return paths;
+  }
+  void TearDown() override {
+    for (const auto& p : made()) std::filesystem::remove_all(p);
+  }
+};
+inline ::testing::Environment* const kExportTestPaths = ::testing::AddGlobalTestEnvironment(new ExportTestPaths);
+
 /// A fresh directory below the system's temporary directory, unique per model, tag and process.
 inline std::string freshExportDir(const std::string& model, const std::string& tag) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() /
       ("hbt_" + model + "_fmu_" + std::to_string(::getpid()) + "_" + tag);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  ExportTestPaths::made().push_back(dir);
   return dir.string();
 }
 

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "common/errors.hpp"
+#include "exported_fmu_test_util.hpp"
 #include "fmi/export/fmu_description.hpp"
 #include "fmi/model_description.hpp"
 
@@ -27,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string writeSpec(const std::string& name, const std::string& inputs, const std::string& parameter) {
-  const fs::path p = fs::temp_directory_path() / ("hbt_fmu_description_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path p = fs::path(fmi::testing::freshExportDir("description", name)) / "spec.yaml";
   std::ofstream f(p);
   f << "model_identifier: battery\ndescription: test\nconfig: config/battery.yaml\n"
     << "data_files: [cell/table_file]\ninputs:\n" << inputs

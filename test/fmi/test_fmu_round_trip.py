@@ -16,6 +16,7 @@ emachine_io.hpp). The FMU run must have used the FMUs (their resolved mappings, 
 extraction), so the test cannot pass on two native runs."""
 import json
 import os
+import shutil
 import subprocess
 import tempfile
 import threading
@@ -89,6 +90,10 @@ class FmuRoundTrip(unittest.TestCase):
             t.start()
         for t in threads:
             t.join()
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
 
     def test_runs_completed_and_the_fmu_run_used_the_fmus(self):
         for name in ("native", "fmu"):
