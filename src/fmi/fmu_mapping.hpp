@@ -4,6 +4,7 @@
 // value they are published as), the FMU parameters it sets, with every unit conversion:
 //     field -> FMU:  value_FMU = fmu.fromSi(field.toSi(value_field))
 //     FMU -> field:  value_field = field.fromSi(fmu.toSi(value_FMU))
+// (no arithmetic when the FMU declares the field's own unit: the value is passed as it is).
 // (fmu: the FMU variable's declared unit, field: the unit its name states, message_layout.hpp).
 //
 // Naming convention (an FMU exported by this project needs no mapping file):
@@ -79,8 +80,11 @@ struct Binding {
   std::string fmu_unit;          // as the FMU declares it ("" = none)
   UnitConversion fmu;            // FMU unit -> SI
   FieldUnit unit;                // the field's unit
-  double fieldFromFmu(double v) const { return unit.fromSi(fmu.toSi(v)); }
-  double fmuFromField(double v) const { return fmu.fromSi(unit.toSi(v)); }
+  /// The FMU declares the field's own unit (same factor and offset to SI, e.g. A.h for a field
+  /// _ah): the value passes unchanged, bit for bit (3600 v / 3600 may differ from v in the last bit).
+  bool sameUnit() const { return fmu.factor == unit.factor && fmu.offset == unit.offset; }
+  double fieldFromFmu(double v) const { return sameUnit() ? v : unit.fromSi(fmu.toSi(v)); }
+  double fmuFromField(double v) const { return sameUnit() ? v : fmu.fromSi(unit.toSi(v)); }
 };
 
 struct FixedOutput {

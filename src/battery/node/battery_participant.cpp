@@ -3,6 +3,7 @@
 
 #include <hybrid_bus_twin/BatteryState.h>
 
+#include "battery/battery_io.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "common/yaml_params.hpp"
@@ -65,60 +66,16 @@ void BatteryParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim:
 }
 
 void BatteryParticipant::step(const ros::Time& t, double dt_s) {
-  const auto& e = emachine_->at(t);
-  BatteryInputs in;
-  dcdc_power_W_ = vehicle_->at(t).dcdc_power_w;
-  in.power_request_W = e.electrical_power_w + dcdc_power_W_;
-  in.air_T_K = ambient_T_K_;
-  in.air_speed_m_s = vehicle_->at(t).speed_m_s;  // over the roof-mounted housing
-  model_->step(dt_s, in);
+  const auto& v = vehicle_->at(t);
+  dcdc_power_W_ = v.dcdc_power_w;
+  model_->step(dt_s, batteryInputs(emachine_->at(t), v, ambient_T_K_));
 }
 
 void BatteryParticipant::publishOutputs(const ros::Time& t) {
-  const BatteryOutputs& o = model_->outputs();
-  hybrid_bus_twin::BatteryState s;
-  s.header.stamp = t;
-  s.terminal_voltage_v = o.terminal_voltage_V;
-  s.current_a = o.current_A;
-  s.soc = o.soc;
-  s.cell_temperature_k = o.cell_T_K;
-  s.discharge_power_limit_w = o.discharge_power_limit_W;
-  s.charge_power_limit_w = o.charge_power_limit_W;
-  s.loss_power_w = o.loss_power_W;
-  s.ocv_v = o.ocv_V;
-  s.rc_voltage_v = o.rc_voltage_V;
-  s.power_w = o.power_W;
-  s.request_w = o.request_W;
-  s.unmet_power_w = o.unmet_power_W;
-  s.request_limited = o.request_limited;
-  s.dcdc_power_w = dcdc_power_W_;
-  s.heat_power_w = o.loss_power_W;
-  s.heat_to_air_w = o.heat_to_air_W;
-  s.ventilation_heat_w = o.ventilation_heat_W;
-  s.discharge_current_limit_a = o.discharge_current_limit_A;
-  s.charge_current_limit_a = o.charge_current_limit_A;
-  s.chemical_energy_j = o.chemical_energy_J;
-  s.terminal_energy_j = o.terminal_energy_J;
-  s.loss_energy_j = o.loss_energy_J;
-  s.ohmic_loss_j = o.ohmic_loss_J;
-  s.rc_loss_j = o.rc_loss_J;
-  s.heat_to_air_j = o.heat_to_air_J;
-  s.ventilation_heat_j = o.ventilation_heat_J;
-  s.stored_heat_change_j = o.stored_heat_change_J;
-  s.rc_stored_energy_change_j = o.rc_stored_energy_change_J;
-  s.energy_residual_j = o.energy_residual_J;
-  s.unmet_energy_j = o.unmet_energy_J;
-  s.charge_throughput_ah = o.charge_throughput_Ah;
-  s.limited_time_s = o.limited_time_s;
-  s.housing_temperature_k = o.housing_T_K;
-  s.enclosure_air_temperature_k = o.enclosure_air_T_K;
-  s.fan_on = o.fan_on;
-  s.fan_power_w = o.fan_power_W;
-  s.fan_energy_j = o.fan_energy_J;
-  s.fan_on_time_s = o.fan_on_time_s;
-  s.thermal_conductance_w_k = o.overall_conductance_W_K;
-  s.ventilation_conductance_w_k = o.ventilation_conductance_W_K;
-  state_pub_.publish(boost::make_shared<hybrid_bus_twin::BatteryState>(s));
+  auto s = boost::make_shared<hybrid_bus_twin::BatteryState>();
+  s->header.stamp = t;
+  writeBatteryState(model_->outputs(), dcdc_power_W_, *s);
+  state_pub_.publish(s);
 }
 
 }  // namespace hbt::battery

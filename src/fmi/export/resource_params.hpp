@@ -1,0 +1,36 @@
+// The parameters of an exported model from its FMU's resources/ (src/fmi/export): the model's
+// YAML read with the node's checks (an unknown key or a bad value named first, then every
+// declared key required), the node's own keys (cosim/, diagnostics/: cosim::nodeKeyPrefixes)
+// ignored; a data file the YAML names is taken from resources/ under its own file name.
+// Throws hbt::InputError naming the file and key.
+#pragma once
+#include <filesystem>
+#include <string>
+
+#include "common/params.hpp"
+#include "common/yaml_params.hpp"
+
+namespace hbt::fmi::exported {
+
+inline void applyResourceParams(const ParamSet& ps, const std::string& yaml_file) {
+  const ParamSource src = readYamlParams(yaml_file);
+  applyParams(ps, src, {"cosim/", "diagnostics/"});
+  requireKeys(ps, src);
+}
+
+/// A model's parameter struct (declare(ParamSet&)) from its YAML, as applyResourceParams reads it.
+template <class Params>
+Params readResourceParams(const std::string& yaml_file) {
+  Params p;
+  ParamSet ps;
+  p.declare(ps);
+  applyResourceParams(ps, yaml_file);
+  return p;
+}
+
+/// resources_dir/<file name of configured_path>
+inline std::string resourceFile(const std::string& resources_dir, const std::string& configured_path) {
+  return resources_dir + "/" + std::filesystem::path(configured_path).filename().string();
+}
+
+}  // namespace hbt::fmi::exported

@@ -1,0 +1,84 @@
+// Helpers of the tests of the twin's exported FMUs (test_<model>_fmu, src/fmi/export): the FMU
+// the build made, loaded with src/fmi into a fresh directory, its outputs, its initialisation at an ambient, and the check that it refuses
+// fmi2Instantiate, its log naming the file, when a file of its resources/ is missing.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "fmi/cs_instance.hpp"
+#include "fmi/export/resource_params.hpp"
+#include "fmi/fmu_error.hpp"
+
+namespace hbt::fmi::testing {
+
+/// The paths made in this process, removed after the last test.
+class ExportTestPaths : public ::testing::Environment {
+ public:
+  static std::vector<std::filesystem::path>& made() {
+    static std::vector<std::filesystem::path> paths;
+    return paths;
+  }
+  void TearDown() override {
+    for (const auto& p : made()) std::filesystem::remove_all(p);
+  }
+};
+inline ::testing::Environment* const kExportTestPaths = ::testing::AddGlobalTestEnvironment(new ExportTestPaths);
+
+/// A fresh directory below the system's temporary directory, unique per model, tag and process.
+inline std::string freshExportDir(const std::string& model, const std::string& tag) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+      ("hbt_" + model + "_fmu_" + std::to_string(::getpid()) + "_" + tag);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  ExportTestPaths::made().push_back(dir);
+  return dir.string();
+}
+
+/// <build>/fmus/<model>.fmu (HBT_FMU_DIR), extracted and loaded as Co-Simulation.
+inline std::shared_ptr<const LoadedFmu> loadExported(const std::string& model, const std::string& tag) {
+  return LoadedFmu::load(std::string(HBT_FMU_DIR) + "/" + model + ".fmu", freshExportDir(model, tag),
+                         InterfaceType::kCoSimulation);
+}
+
+/// The instance set up from t = 0 with scenario.ambient_temperature_c [degC] and initialised.
+inline void initializeAtAmbient(CsInstance& inst, double ambient_c) {
+  inst.setupExperiment(1e-6, 0.0, 100.0);
+  inst.setReal(inst.settable("scenario.ambient_temperature_c", VarType::kReal), ambient_c);
+  inst.enterInitializationMode();
+  inst.exitInitializationMode();
+}
+
+/// Every output variable of the instance's FMU, resolved by name from its modelDescription.xml.
+inline std::vector<VariableRef> outputRefs(const CsInstance& inst, const LoadedFmu& fmu) {
+  std::vector<VariableRef> out;
+  for (const auto& var : fmu.modelDescription().variables())
+    if (var.causality == Causality::kOutput) out.push_back(inst.gettable(var.name, var.type));
+  return out;
+}
+
+/// Removes the resources whose file name contains `resource`, then expects fmi2Instantiate to
+/// return NULL (FmuError) with one log message naming the file.
+inline void expectInstantiationRefusedWithout(const std::string& model, const std::string& resource) {
+  auto loaded = loadExported(model, "without_" + std::to_string(std::hash<std::string>{}(resource)));
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(loaded->directory()) / "resources"))
+    if (e.path().filename().string().find(resource) != std::string::npos) std::filesystem::remove(e.path());
+  std::vector<std::string> log;
+  try {
+    CsInstance inst(loaded, model, [&](const std::string&, fmi2Status, const std::string&, const std::string& m) {
+      log.push_back(m);
+    });
+    ADD_FAILURE() << "instantiated without " << resource;
+  } catch (const FmuError& e) {
+    EXPECT_NE(std::string(e.what()).find("returned NULL"), std::string::npos) << e.what();
+  }
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_NE(log[0].find(resource), std::string::npos) << log[0];
+}
+
+}  // namespace hbt::fmi::testing
