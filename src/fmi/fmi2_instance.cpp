@@ -77,11 +77,12 @@ void Fmi2Instance::fail(const std::string& call, const std::string& what) const 
                         what + " at " + timeText(time_s_));
 }
 
-void Fmi2Instance::check(fmi2Status s, const std::string& call) {
+void Fmi2Instance::check(fmi2Status s, const char* call, const std::string* variable) {
   if (s == fmi2OK || s == fmi2Warning) return;
   if (s == fmi2Error) state_ = State::kError;
   if (s == fmi2Fatal) state_ = State::kFatal;
-  fail(call, std::string("returned ") + statusName(s));
+  fail(variable ? std::string(call) + " '" + *variable + "'" : std::string(call),
+       std::string("returned ") + statusName(s));
 }
 
 VariableRef Fmi2Instance::gettable(const std::string& name, VarType t) const {
@@ -139,36 +140,36 @@ void Fmi2Instance::requireSet(const VariableRef& v, VarType t) const {
 
 void Fmi2Instance::setReal(const VariableRef& v, double value) {
   requireSet(v, VarType::kReal);
-  check(f_.setReal(c_, &v.vr, 1, &value), "fmi2SetReal '" + v.variable->name + "'");
+  check(f_.setReal(c_, &v.vr, 1, &value), "fmi2SetReal", &v.variable->name);
 }
 
 void Fmi2Instance::setInteger(const VariableRef& v, int value) {
   requireSet(v, v.variable->type == VarType::kEnumeration ? VarType::kEnumeration : VarType::kInteger);
-  check(f_.setInteger(c_, &v.vr, 1, &value), "fmi2SetInteger '" + v.variable->name + "'");
+  check(f_.setInteger(c_, &v.vr, 1, &value), "fmi2SetInteger", &v.variable->name);
 }
 
 void Fmi2Instance::setBoolean(const VariableRef& v, bool value) {
   requireSet(v, VarType::kBoolean);
   const fmi2Boolean b = value ? fmi2True : fmi2False;
-  check(f_.setBoolean(c_, &v.vr, 1, &b), "fmi2SetBoolean '" + v.variable->name + "'");
+  check(f_.setBoolean(c_, &v.vr, 1, &b), "fmi2SetBoolean", &v.variable->name);
 }
 
 double Fmi2Instance::getReal(const VariableRef& v) {
   double value = 0.0;
-  check(f_.getReal(c_, &v.vr, 1, &value), "fmi2GetReal '" + v.variable->name + "'");
+  check(f_.getReal(c_, &v.vr, 1, &value), "fmi2GetReal", &v.variable->name);
   if (std::isnan(value)) fail("variable '" + v.variable->name + "'", "NaN output");
   return value;
 }
 
 int Fmi2Instance::getInteger(const VariableRef& v) {
   fmi2Integer value = 0;
-  check(f_.getInteger(c_, &v.vr, 1, &value), "fmi2GetInteger '" + v.variable->name + "'");
+  check(f_.getInteger(c_, &v.vr, 1, &value), "fmi2GetInteger", &v.variable->name);
   return value;
 }
 
 bool Fmi2Instance::getBoolean(const VariableRef& v) {
   fmi2Boolean value = fmi2False;
-  check(f_.getBoolean(c_, &v.vr, 1, &value), "fmi2GetBoolean '" + v.variable->name + "'");
+  check(f_.getBoolean(c_, &v.vr, 1, &value), "fmi2GetBoolean", &v.variable->name);
   return value != fmi2False;
 }
 

@@ -66,7 +66,9 @@ class Fmi2Instance {
 
  protected:
   enum class State { kInstantiated, kInitialization, kStepping, kError, kFatal };
-  void check(fmi2Status s, const std::string& call);
+  /// Throws (naming `call` and, when given, the variable) unless s is fmi2OK/fmi2Warning; the
+  /// message is built only on failure (called per variable and step).
+  void check(fmi2Status s, const char* call, const std::string* variable = nullptr);
   [[noreturn]] void fail(const std::string& what_call, const std::string& what) const;
   /// The common checks of a step of h_s [s] from time().
   void checkStep(const char* call, double h_s) const;

@@ -78,7 +78,7 @@ int MeInstance::indicators(double tau, N_Vector y, double* g, void* self_ptr) {
 }
 
 void MeInstance::reportCallbackFailure() {
-  if (callback_status_ > fmi2Warning) check(callback_status_, callback_call_);
+  if (callback_status_ > fmi2Warning) check(callback_status_, callback_call_.c_str());
 }
 
 void MeInstance::exitInitializationMode() {
