@@ -46,17 +46,8 @@ void EngineParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::
 }
 
 void EngineParticipant::step(const ros::Time& t, double dt_s) {
-  const auto& cmd = command_->at(t);
-  EngineInputs in;
-  in.speed_rad_s = cmd.engine_speed_rad_s;
-  in.torque_request_Nm = cmd.torque_request_nm;
-  in.ambient_T_K = cmd.ambient_temperature_k > 0.0 ? cmd.ambient_temperature_k : ambient_T_K_;
-  in.ambient_p_Pa = cmd.ambient_pressure_pa;  // <= 0: the standard atmosphere (EngineModel::step)
-  in.fuel_enabled = cmd.engine_on;
-  in.coolant_T_K = loops_.coolantAt(t);           // 0 = no cooling node
-  in.oil_T_K = loops_.oilAt(t);                   // 0 = no cooling node
-  in.back_pressure_Pa = loops_.backPressureAt(t);  // 0 = no aftertreatment node
-  model_->step(dt_s, in);
+  // 0 = none for a loop participant that does not run (engine_io.hpp)
+  model_->step(dt_s, engineInputs(command_->at(t), loops_.coolingAt(t), loops_.aftertreatmentAt(t), ambient_T_K_));
 }
 
 void EngineParticipant::publishOutputs(const ros::Time& t) { ports_.publish(t, model_->outputs()); }

@@ -3,7 +3,8 @@
 // ROS-free interface engine::EngineModel (../../engine_interface/engine_model.hpp: its units, equations and the start,
 // ambient, loop and exhaust-temperature policies): engine_map::MapEngineModel (VECTO maps + PT1
 // torque build-up) and engine_1d::Engine1DModel (crank-angle-resolved 1D engine), built by
-// makeEngineModel (../engine_factory.hpp).
+// makeEngineModel (../engine_factory.hpp). The conversion messages <-> model is
+// engine_interface/engine_io.hpp, the one the engine FMUs use (../engine_fmu.hpp).
 //
 // Inputs  (stamped t_k): /vehicle/engine_command (EngineCommand: imposed speed, torque request,
 //                        engine on, ambient T and p; /ems/engine_command when the EMS
