@@ -219,10 +219,25 @@ class Resolver {
     for (const auto& v : md_.variables()) {
       if (v.causality != Causality::kInput || claimed_inputs_.count(v.name)) continue;
       const auto p = splitPath(v.name);
-      if (!p || p->element >= 0 || p->participant == ctx_.participant || p->participant == "scenario") continue;
-      if (!ctx_.produced(p->participant, p->key)) continue;  // not a topic of this scenario: keeps its start value
-      addInput({v.name, v.name, ""}, "inputs (naming convention)");
+      if (!p || p->element >= 0 || p->participant == "scenario") continue;
+      const std::string producer = firstRunningProducer(p->participant, p->key);
+      if (producer.empty()) continue;  // not a topic of this scenario: keeps its start value
+      addInput({producer + "." + p->key + "." + p->field, v.name, ""}, "inputs (naming convention)");
     }
+  }
+
+  /// Of the producer part of an input's name, "<a>" or the alternatives "<a>|<b>|...", the first
+  /// that publishes /<producer>/<key> in this scenario (not the participant itself); "" if none.
+  std::string firstRunningProducer(const std::string& producers, const std::string& key) const {
+    std::size_t from = 0;
+    while (from <= producers.size()) {
+      const auto bar = producers.find('|', from);
+      const std::string p = producers.substr(from, bar == std::string::npos ? std::string::npos : bar - from);
+      if (!p.empty() && p != ctx_.participant && ctx_.produced(p, key)) return p;
+      if (bar == std::string::npos) break;
+      from = bar + 1;
+    }
+    return "";
   }
 
   // --- parameters ---

@@ -9,6 +9,8 @@
 //
 // Naming convention (an FMU exported by this project needs no mapping file):
 //   - FMU input  `<producer>.<key>.<field>`: the field of /<producer>/<key> (another participant);
+//     `<a>|<b>.<key>.<field>`: the same of the first of the alternative producers a, b that
+//     publishes /<producer>/<key> in the scenario (the engine's command: ems|vehicle);
 //   - FMU output `<participant>.<key>.<field>`: the field of /<participant>/<key> it publishes;
 //   - FMU parameter `scenario.<name>`: set from /scenario/<name> (unit as the name says).
 // Explicit entries of the mapping file take precedence. ROS-free: the node reads the mapping

@@ -7,7 +7,8 @@
 //   factor and offset (A.h = 3600 A s, degC = K + 273.15, W), dimensionless without a unit;
 // - the GUID is deterministic and changes with the description;
 // - spec mistakes name the spec file and key (a field the message does not have, a parameter
-//   that is not scenario.<name>).
+//   that is not scenario.<name>, a malformed topic, the step size given twice);
+// - an input of alternative producers <a>|<b>.<key> keeps its name (src/fmi/README.md).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -91,6 +92,35 @@ TEST(FmuDescription, SpecMistakesNameFileAndKey) {
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("not a scenario.<name>"), std::string::npos) << e.what();
+  }
+}
+
+// An input of alternative producers (the engine's command: ems|vehicle) keeps its name, and its
+// C++ group in the binary's header joins them with _or_; a malformed topic or a step size given
+// both by the config (cosim/macro_step_s) and the spec (step_size_s) names the spec and key.
+TEST(FmuDescription, AlternativeProducersAndTheStepSize) {
+  const std::string alt = "  - {topic: ems|vehicle.engine_command, type: EngineCommand, fields: [torque_request_nm]}\n";
+  const FmuDescription d = read(writeSpec("alt", alt, kParameter));
+  EXPECT_EQ(d.variables[0].name, "ems|vehicle.engine_command.torque_request_nm");
+  EXPECT_NE(d.variablesHeader().find("} ems_or_vehicle_engine_command;"), std::string::npos);
+  const ModelDescription md = ModelDescription::parse(d.modelDescriptionXml(), "battery.fmu");
+  EXPECT_EQ(md.variable("ems|vehicle.engine_command.torque_request_nm").unit, "N.m");
+  for (const char* topic : {"ems|.engine_command", "|vehicle.engine_command", "vehicle.engine|command", "vehicle.a.b"}) {
+    const std::string spec = writeSpec("topic", std::string("  - {topic: \"") + topic + "\", type: EngineCommand, fields: [torque_request_nm]}\n", kParameter);
+    try {
+      read(spec);
+      ADD_FAILURE() << topic << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("is not <producer>.<key>"), std::string::npos) << e.what();
+    }
+  }
+  const std::string twice = writeSpec("step", kInputs, std::string(kParameter) + "step_size_s: 0.01\n");
+  try {
+    read(twice);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("step_size_s"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("given twice"), std::string::npos) << e.what();
   }
 }
 

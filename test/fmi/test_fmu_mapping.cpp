@@ -2,7 +2,8 @@
 // participant's message fields, on modelDescription.xml texts written here and on the test FMU
 // thermal_mass (test/fmi/fmus):
 // - the naming convention alone (no mapping file) binds <producer>.<key>.<field> inputs,
-//   <participant>.<key>.<field> outputs and scenario.<name> parameters;
+//   <participant>.<key>.<field> outputs and scenario.<name> parameters; an input of alternative
+//   producers <a>|<b>.<key>.<field> to the first of them that runs;
 // - unit conversions against hand-computed values: degC <-> K (offset 273.15), kW <-> W (1000),
 //   a parameter given in SI (K) set in the FMU's degC, /scenario/ambient_temperature_c (degC by
 //   its name) into a parameter declared in K; the field's own unit declared by the FMU passes bit
@@ -95,6 +96,31 @@ TEST(FmuMapping, NamingConventionNeedsNoMappingFile) {
   ASSERT_EQ(r.parameters.size(), 1u);
   EXPECT_DOUBLE_EQ(r.parameters[0].value_fmu, 278.15);
   EXPECT_EQ(r.parameters[0].source, "/scenario/ambient_temperature_c");
+}
+
+// An input "<a>|<b>.<key>.<field>" is fed by the first alternative that publishes the key in the
+// scenario (the engine's command: ems|vehicle), never by the participant itself; by none, it keeps
+// its start value.
+TEST(FmuMapping, AlternativeProducersFeedAnInputFromTheFirstThatRuns) {
+  const ModelDescription md = description(conventional(var("ctrl|pack|motor.state.electrical_power_w", "input", "<Real unit=\"W\" start=\"0\"/>") +
+                                                       var("ctrl|other.state.electrical_power_w", "input", "<Real unit=\"W\" start=\"0\"/>")));
+  MappingContext ctx = context();
+  ResolvedMapping r = resolveMapping(MappingSpec{}, md, ctx);  // ctrl does not run, pack is the reader
+  ASSERT_EQ(r.inputs.size(), 2u);
+  EXPECT_EQ(r.inputs[1].variable, "ctrl|pack|motor.state.electrical_power_w");
+  EXPECT_EQ(r.inputs[1].participant, "motor");
+  EXPECT_EQ(r.inputs[1].field_name, "motor.state.electrical_power_w");
+  EXPECT_EQ(r.inputs[1].field, 0u);  // MotorState's fields (the header is none): electrical_power_w, torque_nm
+  ctx.produced = [](const std::string& p, const std::string& k) -> std::optional<MessageLayout> {
+    if ((p == "motor" || p == "ctrl") && k == "state") return layout("t/MotorState", "float64 electrical_power_w\nfloat64 torque_nm\n");
+    return std::nullopt;
+  };
+  r = resolveMapping(MappingSpec{}, md, ctx);  // ctrl runs: it feeds both alternatives' inputs
+  ASSERT_EQ(r.inputs.size(), 3u);
+  EXPECT_EQ(r.inputs[1].participant, "ctrl");
+  EXPECT_EQ(r.inputs[1].variable, "ctrl|pack|motor.state.electrical_power_w");
+  EXPECT_EQ(r.inputs[2].participant, "ctrl");
+  EXPECT_EQ(r.inputs[2].field_name, "ctrl.state.electrical_power_w");
 }
 
 TEST(FmuMapping, ExplicitEntriesOnTheTestFmuWithUnitConversions) {

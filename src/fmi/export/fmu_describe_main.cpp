@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
     fs::create_directories(stage / "resources");
     writeFile(stage / "modelDescription.xml", d.modelDescriptionXml());
     copyInto(root / d.config_file, stage / "resources");
+    for (const auto& f : d.config_files) copyInto(root / f, stage / "resources");
     for (const auto& f : d.data_files) copyInto(root / f, stage / "resources");
     fs::create_directories(fs::path(argv[5]).parent_path());
     writeFile(argv[5], d.variablesHeader());

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -56,13 +57,40 @@ Message readMessage(const std::string& msg_dir, const std::string& type, const s
   return {MessageLayout::parse("hybrid_bus_twin/" + type, text), fieldComments(text)};
 }
 
+// "<producer>.<key>" (alternatives "<a>|<b>.<key>") -> the C++ member "<producer>_<key>" ("a_or_b_key")
+std::string cppGroup(const std::string& topic) {
+  std::string g;
+  for (char c : topic) g += c == '.' ? std::string("_") : c == '|' ? std::string("_or_") : std::string(1, c);
+  return g;
+}
+
+// "<producer>.<key>" for an input (the producer part may list alternatives a|b, README "Naming
+// convention"), "<participant>.<key>" for an output: names of letters, digits and _
+void checkTopic(const std::string& topic, bool input, const std::string& spec, const std::string& key) {
+  const auto dot = topic.find('.');
+  bool ok = dot != std::string::npos && dot > 0 && dot + 1 < topic.size();
+  std::string part;
+  for (std::size_t i = 0; ok && i <= topic.size(); ++i) {
+    const char c = i < topic.size() ? topic[i] : '\0';
+    if (c == '.' || c == '|' || c == '\0') {
+      ok = !part.empty() && (c != '|' || (input && i < dot)) && (c != '.' || i == dot);
+      part.clear();
+    } else {
+      ok = std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+      part += c;
+    }
+  }
+  if (!ok)
+    throw InputError(spec, key, "'" + topic + "' is not " + (input ? "<producer>.<key> (alternatives <a>|<b>.<key>)" : "<participant>.<key>"));
+}
+
 ExportedVariable fieldVariable(const std::string& topic, const FieldInfo& f, const Message& m, const std::string& causality,
                                const std::string& spec, const std::string& key) {
   if (f.kind != FieldKind::kFloat64 && f.kind != FieldKind::kBool && f.kind != FieldKind::kInteger)
     throw InputError(spec, key, "field " + f.name + " of " + m.layout.datatype() + " (" + f.type + ") cannot be an FMU variable");
   ExportedVariable v;
   v.name = topic + "." + f.name;
-  v.group = topic.substr(0, topic.find('.')) + "_" + topic.substr(topic.find('.') + 1);
+  v.group = cppGroup(topic);
   v.member = f.name;
   v.kind = f.kind;
   v.causality = causality;
@@ -80,6 +108,7 @@ const YAML::Node required(const YAML::Node& n, const std::string& key, const std
 void readInputs(const YAML::Node& root, const std::string& spec, const std::string& msg_dir, FmuDescription& d) {
   for (const auto& in : required(root, "inputs", spec)) {
     const std::string topic = required(in, "topic", spec).as<std::string>();
+    checkTopic(topic, true, spec, "inputs/" + topic);
     const Message m = readMessage(msg_dir, required(in, "type", spec).as<std::string>(), spec, "inputs/" + topic);
     for (const auto& f : required(in, "fields", spec)) {
       const auto i = m.layout.find(f.as<std::string>());
@@ -93,6 +122,7 @@ void readInputs(const YAML::Node& root, const std::string& spec, const std::stri
 void readOutputs(const YAML::Node& root, const std::string& spec, const std::string& msg_dir, FmuDescription& d) {
   for (const auto& out : required(root, "outputs", spec)) {
     const std::string topic = required(out, "topic", spec).as<std::string>();
+    checkTopic(topic, false, spec, "outputs/" + topic);
     const Message m = readMessage(msg_dir, required(out, "type", spec).as<std::string>(), spec, "outputs/" + topic);
     for (const auto& f : m.layout.fields())
       d.variables.push_back(fieldVariable(topic, f, m, "output", spec, "outputs/" + topic));
@@ -116,15 +146,54 @@ void readParameters(const YAML::Node& root, const std::string& spec, FmuDescript
   }
 }
 
-// a key "a/b/c" of a nested YAML mapping
-YAML::Node at(const YAML::Node& root, const std::string& key) {
+// a key "a/b/c" of a nested YAML mapping; nullopt when absent (a default YAML::Node is a defined
+// null, not an absent one)
+std::optional<YAML::Node> at(const YAML::Node& root, const std::string& key) {
   YAML::Node n = YAML::Clone(root);
   std::istringstream in(key);
   for (std::string part; std::getline(in, part, '/');) {
-    if (!n.IsMap() || !n[part]) return YAML::Node();
+    if (!n.IsMap() || !n[part]) return std::nullopt;
     n.reset(n[part]);  // rebinds (operator= would assign into the node)
   }
   return n;
+}
+
+YAML::Node loadConfig(const std::string& package_root, const std::string& file, const std::string& spec, const std::string& key) {
+  try {
+    return YAML::LoadFile(package_root + "/" + file);
+  } catch (const std::exception& e) {
+    throw InputError(spec, key, "cannot read " + file + ": " + e.what());
+  }
+}
+
+// The FMU's step size [s]: the config's cosim/macro_step_s, or for a participant without one (it
+// steps at the stepper's base step) the spec's step_size_s; one of the two, not both.
+double stepSize(const YAML::Node& root, const YAML::Node& config, const std::string& spec, const std::string& config_file) {
+  const std::optional<YAML::Node> step = at(config, "cosim/macro_step_s");
+  if (step && root["step_size_s"])
+    throw InputError(spec, "step_size_s", "given twice: " + config_file + " has cosim/macro_step_s (the participant's step)");
+  if (!step && !root["step_size_s"])
+    throw InputError(spec, "step_size_s", "missing: " + config_file + " has no cosim/macro_step_s, so the spec states the step");
+  const double h = (step ? *step : root["step_size_s"]).as<double>();
+  if (!(h > 0.0)) throw InputError(step ? config_file : spec, step ? "cosim/macro_step_s" : "step_size_s", "must be > 0 [s]");
+  return h;
+}
+
+// A data_files entry: a key of the config (its value a package-relative path), or
+// {config: <one of config/configs>, key: <key>, dir_key: <key of a folder the path is relative to>}
+std::string dataFile(const YAML::Node& entry, const std::map<std::string, YAML::Node>& configs, const std::string& main,
+                     const std::string& spec) {
+  const bool plain = entry.IsScalar();
+  const std::string file = plain ? main : required(entry, "config", spec).as<std::string>();
+  const std::string key = plain ? entry.as<std::string>() : required(entry, "key", spec).as<std::string>();
+  const auto c = configs.find(file);
+  if (c == configs.end()) throw InputError(spec, "data_files/" + key, "config " + file + " is neither config nor one of configs");
+  const std::optional<YAML::Node> f = at(c->second, key);
+  if (!f) throw InputError(file, key, "missing (named in " + spec + " data_files)");
+  if (plain || !entry["dir_key"]) return f->as<std::string>();
+  const std::optional<YAML::Node> dir = at(c->second, entry["dir_key"].as<std::string>());
+  if (!dir) throw InputError(file, entry["dir_key"].as<std::string>(), "missing (named in " + spec + " data_files)");
+  return dir->as<std::string>() + "/" + f->as<std::string>();
 }
 
 std::string xmlEscape(const std::string& s) {
@@ -232,15 +301,15 @@ FmuDescription FmuDescription::read(const std::string& spec, const std::string& 
   d.model_identifier = required(root, "model_identifier", spec).as<std::string>();
   d.description = required(root, "description", spec).as<std::string>();
   d.config_file = required(root, "config", spec).as<std::string>();
-  const YAML::Node config = YAML::LoadFile(package_root + "/" + d.config_file);
-  const YAML::Node step = at(config, "cosim/macro_step_s");
-  if (!step) throw InputError(d.config_file, "cosim/macro_step_s", "missing: the FMU's step size");
-  d.step_size_s = step.as<double>();
-  for (const auto& k : required(root, "data_files", spec)) {
-    const YAML::Node f = at(config, k.as<std::string>());
-    if (!f) throw InputError(d.config_file, k.as<std::string>(), "missing (named in " + spec + " data_files)");
-    d.data_files.push_back(f.as<std::string>());
-  }
+  const YAML::Node config = loadConfig(package_root, d.config_file, spec, "config");
+  d.step_size_s = stepSize(root, config, spec, d.config_file);
+  std::map<std::string, YAML::Node> configs = {{d.config_file, config}};
+  if (root["configs"])
+    for (const auto& c : root["configs"]) {
+      d.config_files.push_back(c.as<std::string>());
+      configs.emplace(d.config_files.back(), loadConfig(package_root, d.config_files.back(), spec, "configs"));
+    }
+  for (const auto& k : required(root, "data_files", spec)) d.data_files.push_back(dataFile(k, configs, d.config_file, spec));
   readInputs(root, spec, msg_dir, d);
   readOutputs(root, spec, msg_dir, d);
   readParameters(root, spec, d);

@@ -1,7 +1,8 @@
 // What an exported FMU declares (src/fmi/export): its variables, read from the model's export
 // spec (src/<model>/fmu/<model>_fmu.yaml) and the message definitions msg/*.msg, named by the
 // naming convention of the project's FMUs (src/fmi/README.md):
-//   input  <producer>.<key>.<field>     a field the participant reads from /<producer>/<key>
+//   input  <producer>.<key>.<field>     a field the participant reads from /<producer>/<key>;
+//          <a>|<b>.<key>.<field>        ... from the first of the alternative producers a, b that runs
 //   output <participant>.<key>.<field>  every field of the message it publishes on /<participant>/<key>
 //   parameter scenario.<name>           a scenario value /scenario/<name> it reads
 // Units: the field's, as its name suffix states (unitOfName, message_layout.hpp); descriptions:
@@ -34,9 +35,10 @@ struct ExportedVariable {
 struct FmuDescription {
   std::string model_identifier;
   std::string description;
-  std::string config_file;               // package-relative: -> resources/<basename>
-  std::vector<std::string> data_files;   // package-relative paths named by the config: -> resources/<basename>
-  double step_size_s = 0.0;              // the participant's macro step (cosim/macro_step_s of its config)
+  std::string config_file;                 // package-relative: -> resources/<basename>
+  std::vector<std::string> config_files;   // further YAMLs the model reads (spec `configs`): -> resources/<basename>
+  std::vector<std::string> data_files;     // package-relative paths named by the configs: -> resources/<basename>
+  double step_size_s = 0.0;  // the participant's macro step: cosim/macro_step_s of its config, else the spec's step_size_s
   std::vector<ExportedVariable> variables;
 
   /// Reads the spec file and the message definitions of `msg_dir`; package-relative paths

@@ -12,9 +12,21 @@
 
 namespace hbt::fmi::exported {
 
+/// The model's keys of a YAML in resources/ (the node's own keys removed), for a model that
+/// reads its ParamSource itself (as cosim::loadModelParams gives it to the node).
+inline ParamSource readResourceSource(const std::string& yaml_file) {
+  ParamSource src = readYamlParams(yaml_file);
+  for (auto it = src.values.begin(); it != src.values.end();) {
+    bool node_key = false;
+    for (const auto& p : kParticipantSections) node_key = node_key || it->first.rfind(p, 0) == 0;
+    it = node_key ? src.values.erase(it) : std::next(it);
+  }
+  return src;
+}
+
 inline void applyResourceParams(const ParamSet& ps, const std::string& yaml_file) {
   const ParamSource src = readYamlParams(yaml_file);
-  applyParams(ps, src, {"cosim/", "diagnostics/"});
+  applyParams(ps, src, kParticipantSections);
   requireKeys(ps, src);
 }
 
