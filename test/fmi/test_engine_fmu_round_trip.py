@@ -4,8 +4,10 @@
 the native engine participant (`engine_fmu:=`, no mapping file) in both scenarios, against the
 native run of each:
 
-- baseline_urban, 300 s: the FMU's command input ems|vehicle.engine_command.* fed by the vehicle;
-- hybrid_urban, 150 s (stop-start: the engine switched off and restarted by the EMS): fed by the
+- baseline_urban, 300 s from a cold start (cold oil): the FMU's command input
+  ems|vehicle.engine_command.* fed by the vehicle;
+- hybrid_urban, 150 s from start:=warm (the EMS stops the warm engine at standstill: 23 s off in
+  those 150 s, restarts included; from a cold start it stays on for the first 600 s): fed by the
   EMS (the alternative that runs; src/fmi/README.md, naming convention).
 
 Each: summary.json equal but wall_time_s, every bag message byte for byte the same but
@@ -28,7 +30,8 @@ from test_fmu_round_trip import flatten, fmu_dir, messages, read_json  # noqa: E
 from twin_tools.launch import run_util  # noqa: E402
 from twin_tools.paths import REPO  # noqa: E402
 
-RUNS = {"baseline_urban": (300.0, "vehicle"), "hybrid_urban": (150.0, "ems")}  # until [s], the command's producer
+# scenario: (until [s], the command's producer, further launch arguments)
+RUNS = {"baseline_urban": (300.0, "vehicle", []), "hybrid_urban": (150.0, "ems", ["start:=warm"])}
 
 
 class EngineFmuRoundTrip(unittest.TestCase):
@@ -44,7 +47,8 @@ class EngineFmuRoundTrip(unittest.TestCase):
             out = os.path.join(cls.tmp, scenario + "_" + variant)
             args = ["engine_fmu:=" + cls.fmu] if variant == "fmu" else []
             r = subprocess.run([os.path.join(REPO, "scripts", "twin"), "run", scenario, "--out", out,
-                                "until:=%g" % RUNS[scenario][0]] + args, env=dict(os.environ, HBT_SETUP_DONE="1"),
+                                "until:=%g" % RUNS[scenario][0]] + RUNS[scenario][2] + args,
+                               env=dict(os.environ, HBT_SETUP_DONE="1"),
                                capture_output=True, text=True)
             cls.out[(scenario, variant)] = out
             cls.rc[(scenario, variant)] = (r.returncode, r.stdout[-2000:] + r.stderr[-2000:])
@@ -61,7 +65,7 @@ class EngineFmuRoundTrip(unittest.TestCase):
         shutil.rmtree(cls.tmp, ignore_errors=True)
 
     def test_runs_completed_and_the_command_came_from_the_scenarios_producer(self):
-        for scenario, (_, producer) in sorted(RUNS.items()):
+        for scenario, (_, producer, _) in sorted(RUNS.items()):
             for variant in ("native", "fmu"):
                 key = (scenario, variant)
                 self.assertEqual(self.rc[key][0], 0, self.rc[key][1])
@@ -75,16 +79,18 @@ class EngineFmuRoundTrip(unittest.TestCase):
             self.assertEqual(inputs["cooling.state.oil_temperature_k"], "cooling.state.oil_temperature_k")
 
     def test_summary_equal_but_the_wall_time(self):
-        for scenario, (until_s, _) in sorted(RUNS.items()):
+        for scenario, (until_s, _, _) in sorted(RUNS.items()):
             a, b = (flatten(read_json(os.path.join(self.out[(scenario, v)], "summary.json"))) for v in ("native", "fmu"))
             self.assertEqual(set(a), set(b), scenario)
             differ = sorted(k for k in a if a[k] != b[k])
             print("\n  %s summary.json: %d keys, differing: %s" % (scenario, len(a), differ))
             self.assertLessEqual(set(differ), {"/wall_time_s"}, scenario)
             self.assertEqual(a["/sim_time_s"], until_s)
+            if scenario == "hybrid_urban":
+                self.assertGreater(a["/engine_off_s"], 0.0)  # stop-start: the engine off and restarted
 
     def test_bag_byte_identical_but_run_info(self):
-        for scenario, (until_s, _) in sorted(RUNS.items()):
+        for scenario, (until_s, _, _) in sorted(RUNS.items()):
             a, b = (messages(os.path.join(self.out[(scenario, v)], "run.bag")) for v in ("native", "fmu"))
             self.assertEqual(sorted(a), sorted(b), scenario)
             n = 0
