@@ -113,6 +113,7 @@ class Participant::Hooks : public core::ParticipantHooks {
     if (p_.cmd_sub_.getNumPublishers() == 0) os << " /sim/step not connected;";
     return os.str();
   }
+  void runEndKnown(core::Nanos t_end) override { p_.checkRunEnd(core::toSec(t_end)); }
   void topicsAnnounced(const std::vector<std::string>& topics,
                        const std::vector<std::string>& participants) override {
     p_.topicsAnnounced(topics, participants);

@@ -113,6 +113,10 @@ class Participant {
   /// The stepper fell silent while stepping (died or hung: core/protocol.hpp); close(t, true) has
   /// run. `message` says how long it was silent and at which t this participant closed.
   virtual void stepperLost(const ros::Time& t, const std::string& message) {}
+  /// At each SYNC before step 0: the end of the run as known [s] (until, or the longest mission
+  /// a participant announced, the earlier of both; 0 = unknown). Throw (hbt::ModelDivergence,
+  /// hbt::InputError, ...) when this participant cannot run that far: the run ends before step 0.
+  virtual void checkRunEnd(double end_s) {}
   /// At each SYNC before step 0: every output topic of the run (all participants announced).
   /// An observer may add inputs here (the recorder without a topic list records them all).
   virtual void topicsAnnounced(const std::vector<std::string>& topics,

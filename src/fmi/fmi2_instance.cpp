@@ -173,6 +173,70 @@ bool Fmi2Instance::getBoolean(const VariableRef& v) {
   return value != fmi2False;
 }
 
+VariableBatch Fmi2Instance::batch(const std::vector<VariableRef>& refs, VarType t) const {
+  VariableBatch b;
+  b.type = t;
+  for (const VariableRef& r : refs) {
+    const VarType vt = r.variable->type == VarType::kEnumeration ? VarType::kInteger : r.variable->type;
+    if (vt != t) {
+      throw FmuError(fmu_->file(), "variable '" + r.variable->name + "' is " + fmi::name(r.variable->type) +
+                                       ", not " + fmi::name(t));
+    }
+    if (!b.fixed && r.variable->causality == Causality::kParameter && r.variable->variability == Variability::kFixed)
+      b.fixed = r.variable;
+    b.vrs.push_back(r.vr);
+    b.variables.push_back(r.variable);
+  }
+  return b;
+}
+
+void Fmi2Instance::requireSet(const VariableBatch& b, VarType t) const {
+  if (b.type != t) fail(std::string("set ") + fmi::name(t), std::string("the batch is ") + fmi::name(b.type));
+  if (state_ == State::kStepping && b.fixed) {
+    fail("set '" + b.fixed->name + "'", "a fixed parameter cannot change after initialisation");
+  }
+}
+
+void Fmi2Instance::checkBatch(fmi2Status s, const char* call, const VariableBatch& b) {
+  if (s == fmi2OK || s == fmi2Warning) return;
+  if (s == fmi2Error) state_ = State::kError;
+  if (s == fmi2Fatal) state_ = State::kFatal;
+  std::string names;
+  for (const ScalarVariable* v : b.variables) names += (names.empty() ? "'" : ", '") + v->name + "'";
+  fail(std::string(call) + " of " + std::to_string(b.size()) + (b.size() == 1 ? " variable " : " variables ") + names,
+       std::string("returned ") + statusName(s));
+}
+
+void Fmi2Instance::setReals(const VariableBatch& b, const double* values) {
+  requireSet(b, VarType::kReal);
+  if (b.size()) checkBatch(f_.setReal(c_, b.vrs.data(), b.size(), values), "fmi2SetReal", b);
+}
+
+void Fmi2Instance::setIntegers(const VariableBatch& b, const int* values) {
+  requireSet(b, VarType::kInteger);
+  if (b.size()) checkBatch(f_.setInteger(c_, b.vrs.data(), b.size(), values), "fmi2SetInteger", b);
+}
+
+void Fmi2Instance::setBooleans(const VariableBatch& b, const fmi2Boolean* values) {
+  requireSet(b, VarType::kBoolean);
+  if (b.size()) checkBatch(f_.setBoolean(c_, b.vrs.data(), b.size(), values), "fmi2SetBoolean", b);
+}
+
+void Fmi2Instance::getReals(const VariableBatch& b, double* values) {
+  if (!b.size()) return;
+  checkBatch(f_.getReal(c_, b.vrs.data(), b.size(), values), "fmi2GetReal", b);
+  for (std::size_t i = 0; i < b.size(); ++i)
+    if (std::isnan(values[i])) fail("variable '" + b.variables[i]->name + "'", "NaN output");
+}
+
+void Fmi2Instance::getIntegers(const VariableBatch& b, int* values) {
+  if (b.size()) checkBatch(f_.getInteger(c_, b.vrs.data(), b.size(), values), "fmi2GetInteger", b);
+}
+
+void Fmi2Instance::getBooleans(const VariableBatch& b, fmi2Boolean* values) {
+  if (b.size()) checkBatch(f_.getBoolean(c_, b.vrs.data(), b.size(), values), "fmi2GetBoolean", b);
+}
+
 void Fmi2Instance::checkStep(const char* call, double h_s) const {
   if (state_ != State::kStepping) fail(call, "called before exitInitializationMode or after an error");
   if (!(h_s > 0.0)) fail(call, "step size " + std::to_string(h_s) + " s is not > 0");

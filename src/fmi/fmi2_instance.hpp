@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "fmi/loaded_fmu.hpp"
 
@@ -30,6 +31,17 @@ struct VariableRef {
   fmi2ValueReference vr = 0;
 };
 
+/// Variables of one type set or read together: one fmi2Set<Type>/fmi2Get<Type> call over the
+/// value-reference vector per communication step instead of one call per variable (FMI 2.0
+/// section 2.1.7 takes vectors). Made once by Fmi2Instance::batch (types checked there).
+struct VariableBatch {
+  VarType type = VarType::kReal;
+  std::vector<fmi2ValueReference> vrs;
+  std::vector<const ScalarVariable*> variables;  // parallel to vrs: the names in messages
+  const ScalarVariable* fixed = nullptr;         // the first fixed parameter among them, if any
+  std::size_t size() const { return vrs.size(); }
+};
+
 class Fmi2Instance {
  public:
   /// Instantiates fmu as instance_name with fmu's interface type; FmuError if fmi2Instantiate
@@ -44,6 +56,9 @@ class Fmi2Instance {
   VariableRef settable(const std::string& name, VarType t) const;
   /// A variable of type t the importer may read (any causality). FmuError naming it otherwise.
   VariableRef gettable(const std::string& name, VarType t) const;
+  /// The variables refs (from settable() or gettable(), each of type t: Integer includes
+  /// Enumeration) as one batch; FmuError naming a variable of another type.
+  VariableBatch batch(const std::vector<VariableRef>& refs, VarType t) const;
 
   /// fmi2SetupExperiment; the communication time starts at start_s.
   void setupExperiment(std::optional<double> tolerance, double start_s, std::optional<double> stop_s);
@@ -58,6 +73,17 @@ class Fmi2Instance {
   double getReal(const VariableRef& v);
   int getInteger(const VariableRef& v);
   bool getBoolean(const VariableRef& v);
+
+  /// One call over a batch: values[i] is the value of b.variables[i] (nothing is called for an
+  /// empty batch). A failing status names the call and every variable of the batch (after
+  /// fmi2Error the standard allows no further call that could single one out); a NaN read
+  /// names the variable.
+  void setReals(const VariableBatch& b, const double* values);
+  void setIntegers(const VariableBatch& b, const int* values);
+  void setBooleans(const VariableBatch& b, const fmi2Boolean* values);
+  void getReals(const VariableBatch& b, double* values);
+  void getIntegers(const VariableBatch& b, int* values);
+  void getBooleans(const VariableBatch& b, fmi2Boolean* values);
 
   /// The current time [s] (communication point, or the integrator's time).
   double time() const { return time_s_; }
@@ -77,6 +103,9 @@ class Fmi2Instance {
   static void logMessage(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
                          fmi2String category, fmi2String message, ...);
   void requireSet(const VariableRef& v, VarType t) const;
+  void requireSet(const VariableBatch& b, VarType t) const;
+  /// check() for a call over batch b: the message names every variable of b.
+  void checkBatch(fmi2Status s, const char* call, const VariableBatch& b);
 
  protected:
 

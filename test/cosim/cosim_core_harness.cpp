@@ -25,6 +25,12 @@ void FakeParticipant::topicsAnnounced(const std::vector<std::string>& topics,
   }
 }
 
+void FakeParticipant::runEndKnown(Nanos t_end) {
+  run_ends.push_back(t_end);
+  if (faults.runs_until_s >= 0.0 && t_end > toNanos(faults.runs_until_s))
+    throw std::runtime_error("model.fmu: stopTime " + std::to_string(faults.runs_until_s) + " s is before the end");
+}
+
 void FakeParticipant::configure() {
   if (faults.configure_throws) throw std::runtime_error("cfg.yaml: key 'mass_kg': must be > 0");
   for (auto& in : inputs) core.addInput(in.get());

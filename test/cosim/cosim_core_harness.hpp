@@ -48,6 +48,7 @@ struct Faults {
   double step_wall_s = 0.0;           // every step() takes this long [s of the simulated wall]
   double finish_at_s = -1.0;          // finished() once t >= this
   bool never_ready_to_close = false;  // readyToClose() false forever
+  double runs_until_s = -1.0;         // runEndKnown() throws for an end later than this [s] (< 0: never)
 };
 
 struct StepLog {
@@ -89,6 +90,8 @@ class FakeParticipant : public ParticipantHooks {
                        const std::vector<std::string>& participants) override;
   bool record_all = false;
   std::vector<std::vector<std::string>> announced_tables;  // topics of each SYNC seen
+  void runEndKnown(Nanos t_end) override;
+  std::vector<Nanos> run_ends;  // the end each SYNC carried
   void sendStatus(const Status& s) override;
   void logError(const std::string&) override {}
   double wallNow() const override;

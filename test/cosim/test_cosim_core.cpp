@@ -1,12 +1,15 @@
 // The ROS-free protocol core (src/cosim/core): StepperCore and ParticipantCores driven against
 // each other in-process (cosim_core_harness.hpp: FIFO bus, simulated wall clock): normal run,
 // end by FINISHED and by until, ERROR in configure and in step (also after the end), ABORT
-// closing files, multi-rate held values, ordered groups, arrival order, report windows, what is
+// closing files, the run's end handed over at SYNC (a participant that cannot reach it refuses
+// before step 0), multi-rate held values, ordered groups, arrival order, report windows, what is
 // sent where, validation. What depends on wall time (timeouts, /clock, slow steps) is in
 // test_cosim_core_wall.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
+#include <vector>
 
 #include "cosim/core/process_cpu.hpp"
 #include "cosim_core_harness.hpp"
@@ -104,6 +107,43 @@ TEST(CosimCore, ErrorInConfigureAbortsBeforeStepZero) {
   EXPECT_EQ(bus.stepper->step(), 0u);
   EXPECT_TRUE(bus.get("a").steps.empty());
   EXPECT_EQ(bus.commands.back().command, Cmd::Abort);
+}
+
+TEST(CosimCore, SyncCarriesTheRunsEndAsKnownBeforeStepZero) {
+  // until only; the mission only (until 0); both: the earlier
+  for (const auto& [until_s, mission_s, want_ns] :
+       std::vector<std::tuple<double, double, Nanos>>{{0.05, 0.0, 50 * MS}, {0.0, 0.03, 30 * MS},
+                                                      {0.05, 0.03, 30 * MS}, {0.02, 0.03, 20 * MS}}) {
+    Bus bus;
+    Faults fa;
+    fa.finish_at_s = mission_s > 0.0 ? mission_s : -1.0;
+    addPair(bus, fa);
+    const double m = mission_s;
+    bus.get("a").on_configure = [m](ParticipantCore& c) { c.setMissionDuration(m); };
+    bus.run(config({"a", "b"}, until_s));
+    ASSERT_TRUE(bus.completed);
+    EXPECT_FALSE(bus.stepper->aborted()) << bus.stepper->reason();
+    ASSERT_FALSE(bus.get("b").run_ends.empty());
+    for (Nanos t : bus.get("b").run_ends) EXPECT_EQ(t, want_ns) << "until " << until_s << " mission " << mission_s;
+  }
+}
+
+TEST(CosimCore, AParticipantThatCannotReachTheEndAbortsBeforeStepZero) {
+  Bus bus;
+  Faults fb;
+  fb.runs_until_s = 0.02;  // the mission (announced by a) lasts 0.03 s, until is 0
+  Faults fa;
+  fa.finish_at_s = 0.03;
+  addPair(bus, fa, fb);
+  bus.get("a").on_configure = [](ParticipantCore& c) { c.setMissionDuration(0.03); };
+  bus.run(config({"a", "b"}, 0.0));
+  ASSERT_TRUE(bus.completed);
+  EXPECT_TRUE(bus.stepper->aborted());
+  EXPECT_EQ(bus.stepper->reason(), "b: model.fmu: stopTime 0.020000 s is before the end");
+  EXPECT_EQ(bus.stepper->step(), 0u);
+  EXPECT_TRUE(bus.get("a").steps.empty());
+  EXPECT_TRUE(bus.get("a").published.empty());  // not even the outputs at t_0: START never came
+  for (const auto& c : bus.commands) EXPECT_NE(c.command, Cmd::Start);
 }
 
 TEST(CosimCore, ErrorInStepAbortsAndClosesFiles) {

@@ -5,7 +5,10 @@
 // - the resources location reaches the FMU (a changed C in the extracted resources changes the
 //   time constant as the exact solution says; a missing file fails instantiation);
 // - the FMU's log messages reach the sink, formatted; errors name FMU, call or variable, time;
-// - two instances of one FMU are independent and bit-identical for the same inputs.
+// - two instances of one FMU are independent and bit-identical for the same inputs;
+// - batched calls (one fmi2Set/Get over a value-reference vector) give the exact solution and
+//   the single calls' values bit for bit; a failing batched call names every variable of its
+//   batch, a NaN in a batched read names its variable.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -227,6 +230,66 @@ TEST(CsInstance, TwoInstancesAreIndependentAndBitIdentical) {
   }
   EXPECT_EQ(a.fmu.getInteger(a.steps), 50);
   EXPECT_EQ(c.fmu.getInteger(c.steps), 50);
+}
+
+TEST(CsInstance, BatchedCallsGiveTheExactSolutionAndTheSingleCallsBitForBit) {
+  const auto p = readParameters(fs::path(HBT_TEST_FMU_SOURCE_DIR) / "resources/thermal_mass.txt");
+  const double C = p.at("heat_capacity_J_per_K"), G = p.at("conductance_W_per_K");
+  auto loaded = load("thermal_mass", testing::freshDir("x"));
+  ThermalMass single(loaded, "single", 35.0), batched(loaded, "batched", 35.0);
+  const VariableBatch in = batched.fmu.batch({batched.Q, batched.T_amb}, VarType::kReal);
+  const VariableBatch out = batched.fmu.batch({batched.T, batched.T_amb}, VarType::kReal);
+  const VariableBatch steps = batched.fmu.batch({batched.steps}, VarType::kInteger);
+  const VariableBatch flags = batched.fmu.batch({batched.insulated}, VarType::kBoolean);
+  double T_degC = 35.0;
+  for (int k = 0; k < 20; ++k) {
+    const double Q_kW = k % 2 ? 1.5 : -0.25, T_amb_degC = -10.0 + 3.0 * k, h = 4.0;
+    const double u[2] = {Q_kW, T_amb_degC};
+    batched.fmu.setReals(in, u);
+    single.fmu.setReal(single.Q, Q_kW);
+    single.fmu.setReal(single.T_amb, T_amb_degC);
+    batched.fmu.doStep(h);
+    single.fmu.doStep(h);
+    double y[2] = {0.0, 0.0};
+    batched.fmu.getReals(out, y);
+    ASSERT_EQ(y[0], single.fmu.getReal(single.T)) << "step " << k;  // bit for bit
+    ASSERT_EQ(y[1], T_amb_degC);
+    // exact, in K and W (the FMU's degC and kW): offsets cancel in the differences
+    ASSERT_NEAR(y[0], exactT(T_degC, 1000.0 * Q_kW, T_amb_degC, C, G, h), 1e-9) << "step " << k;
+    T_degC = y[0];
+  }
+  int n = 0;
+  batched.fmu.getIntegers(steps, &n);
+  EXPECT_EQ(n, 20);
+  const fmi2Boolean on = fmi2True;
+  batched.fmu.setBooleans(flags, &on);
+  EXPECT_TRUE(batched.fmu.getBoolean(batched.insulated));
+  batched.fmu.setReals(batched.fmu.batch({}, VarType::kReal), nullptr);  // empty: nothing called
+}
+
+TEST(CsInstance, AFailingBatchedCallNamesEveryVariableOfItsBatch) {
+  ThermalMass m(load("set_error_at_2s", testing::freshDir("x")), "failing", 20.0);
+  const VariableBatch in = m.fmu.batch({m.Q, m.T_amb}, VarType::kReal);
+  const double u[2] = {1.0, 10.0};
+  for (int k = 0; k < 4; ++k) {
+    m.fmu.setReals(in, u);
+    m.fmu.doStep(0.5);
+  }
+  expectThrowWith<ModelDivergence>([&] { m.fmu.setReals(in, u); },
+                                   {"set_error_at_2s.fmu", "'failing'", "fmi2SetReal of 2 variables 'Q', 'T_amb'",
+                                    "fmi2Error", "t = 2 s"});
+  expectThrowWith<ModelDivergence>([&] { m.fmu.doStep(0.5); }, {"fmi2DoStep", "after an error"});
+}
+
+TEST(CsInstance, BatchedReadNamesTheNanVariableAndBatchesCheckTheirTypes) {
+  ThermalMass m(load("nan_at_2s", testing::freshDir("x")), "nan", 20.0);
+  const VariableBatch out = m.fmu.batch({m.T_amb, m.T}, VarType::kReal);
+  double y[2];
+  for (int k = 0; k < 5; ++k) m.fmu.doStep(0.5);
+  expectThrowWith<ModelDivergence>([&] { m.fmu.getReals(out, y); }, {"variable 'T'", "NaN", "t = 2.5 s"});
+  expectThrowWith<FmuError>([&] { m.fmu.batch({m.T, m.steps}, VarType::kReal); }, {"'steps'", "Integer, not Real"});
+  const VariableBatch fixed = m.fmu.batch({m.Q, m.fmu.settable("T_start", VarType::kReal)}, VarType::kReal);
+  expectThrowWith<ModelDivergence>([&] { m.fmu.setReals(fixed, y); }, {"'T_start'", "fixed parameter"});
 }
 
 }  // namespace

@@ -17,7 +17,8 @@ macro step 0.1 s) and in place of a native participant of hybrid_urban:
   the run completes with the others reading it, the cabin temperature is exact.
 - Bad FMUs rejected before step 0, naming the file and the problem (status.json): not a zip,
   FMI 3.0, no linux64 binary, a missing function, a mapped variable that does not exist, an
-  incompatible unit, a stopTime before the run's end; through `twin run hybrid_urban
+  incompatible unit, a stopTime before the run's end (until 7 s; and until 0 in baseline_urban:
+  before the mission's end, which only the stepper knows); through `twin run hybrid_urban
   battery_fmu:=` an FMU that does not provide the battery's fields (exit code non-zero).
 - fmi2Error at t = 2 s and a NaN output at t = 2 s stop the run naming FMU, call or variable and
   time; the bag is closed and readable up to there. A doStep that never returns is the stepper's
@@ -223,12 +224,8 @@ class FmuParticipant(unittest.TestCase):
             self.assertIn(f, st["message"])
         print("\n  battery_fmu: %s" % st["message"])
 
-    def test_fmu_in_place_of_the_hvac_in_baseline_urban(self):
-        """hvac_fmu:= replaces the hvac participant of baseline_urban by the thermal mass as a
-        "cabin": its ambient read from the vehicle's /vehicle/to_cooling (K -> degC), its T
-        published as hvac.state.cabin_temperature_k, every other field of HvacState declared not
-        provided (published as 0). The others read it under the same topic: the run completes,
-        the cabin temperature follows the exact solution with the held ambient."""
+    def hvac_map(self):
+        """The mapping of the thermal mass as the hvac's "cabin" (below): (path, HvacState fields)."""
         import yaml
         fields = []
         with open(os.path.join(REPO, "msg", "HvacState.msg")) as f:
@@ -245,6 +242,15 @@ class FmuParticipant(unittest.TestCase):
         path = os.path.join(self.tmp, "hvac_map.yaml")
         with open(path, "w") as f:
             yaml.safe_dump(doc, f)
+        return path, fields
+
+    def test_fmu_in_place_of_the_hvac_in_baseline_urban(self):
+        """hvac_fmu:= replaces the hvac participant of baseline_urban by the thermal mass as a
+        "cabin": its ambient read from the vehicle's /vehicle/to_cooling (K -> degC), its T
+        published as hvac.state.cabin_temperature_k, every other field of HvacState declared not
+        provided (published as 0). The others read it under the same topic: the run completes,
+        the cabin temperature follows the exact solution with the held ambient."""
+        path, fields = self.hvac_map()
         out = os.path.join(self.tmp, "hvac")
         t0 = time.time()
         st = run_util.run_launch(os.path.join(REPO, "launch", "baseline_urban.launch"), out, until=20.0,
@@ -270,6 +276,25 @@ class FmuParticipant(unittest.TestCase):
             rows = [r for r in f if not r.startswith("#")]
         self.assertEqual(sum(r.startswith("not_provided,") for r in rows), len(fields) - 1)
         self.assertIn("input,vehicle.to_cooling.ambient_temperature_k,T_amb,degC", "".join(rows))
+
+    def test_stop_time_before_the_missions_end_rejected_before_step_0(self):
+        """until:=0, the whole mission: the thermal mass's DefaultExperiment stopTime (3600 s) is
+        before the end of the Urban mission the vehicle announces (over 8000 s). The stepper's
+        SYNC carries that end; the FMU participant refuses there, before START: no step run."""
+        path, _ = self.hvac_map()
+        out = os.path.join(self.tmp, "hvac_whole_mission")
+        fmu = os.path.join(FMUS, "thermal_mass.fmu")
+        t0 = time.time()
+        st = run_util.run_launch(os.path.join(REPO, "launch", "baseline_urban.launch"), out, until=0,
+                                 ambient=25, record_period=0, timeout=10.0, hvac_fmu=fmu, hvac_fmu_map=path)
+        self.wall["hvac_fmu stopTime, until 0"] = time.time() - t0
+        self.assertEqual(st["status"], "error", st)
+        self.assertEqual(st["steps"], 0, st)
+        for f in ("hvac", fmu, "DefaultExperiment stopTime 3600 s is before the end of this run (the mission's end at "):
+            self.assertIn(f, st["message"])
+        end_s = float(st["message"].split("the mission's end at ")[1].split(" s")[0])
+        self.assertGreater(end_s, 8000.0)
+        print("\n  stopTime, until 0: %s" % st["message"])
 
     def test_fmu_failures_mid_run_stop_it_cleanly(self):
         for name, fragments in (("error_at_2s", ["fmi2DoStep", "t = 2"]), ("nan_at_2s", ["'T'", "NaN", "t = 2"])):

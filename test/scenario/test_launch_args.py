@@ -125,6 +125,20 @@ class LaunchArgs(unittest.TestCase):
             rc, out, _ = check("battery_fmu:=" + fmu, "battery_fmu_map:=" + good, scenario="hybrid_urban")
             self.assertEqual(rc, 0)
             self.assertEqual(out, ["battery_fmu:=" + fmu, "battery_fmu_map:=" + good])
+            # a pack set or a warm start the FMU would not receive: refused naming both arguments
+            rc, _, err = check("battery_fmu:=" + fmu, "pack:=production_13s2p", scenario="hybrid_urban")
+            self.assertNotEqual(rc, 0)
+            for w in ("'pack:=production_13s2p' cannot reach battery_fmu:=" + fmu, "scenario.<name>"):
+                self.assertIn(w, err)
+            rc, _, err = check("cooling_fmu:=" + fmu, "start:=warm", scenario="hybrid_urban")
+            self.assertNotEqual(rc, 0)
+            self.assertIn("'start:=warm' cannot reach cooling_fmu:=" + fmu, err)
+            # ... but not where no FMU reads it: the native battery gets the pack, the e-machine
+            # model has no warm start; start:=cold is what the FMU does anyway
+            for args in (("emachine_fmu:=" + fmu, "pack:=production_13s2p"), ("emachine_fmu:=" + fmu, "start:=warm"),
+                         ("battery_fmu:=" + fmu, "start:=cold")):
+                rc, _, err = check(*args, scenario="hybrid_urban")
+                self.assertEqual(rc, 0, err)
 
     def test_config_files_empty_or_garbage(self):
         """every YAML of the config folder must parse and hold keys: roslaunch would load an

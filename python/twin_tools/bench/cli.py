@@ -44,6 +44,12 @@
                                     5 and 8 probe participants (no model), nodelets and nodes, one
                                     rate / multi-rate / one Gauss-Seidel group per participant
                                     (twin_tools.bench.cosim; K base steps per nodelets run, K/4 for nodes)
+  scripts/twin bench fmu [--pairs N] [--until S]  the FMU participant: its overhead per base step
+                                    beyond the FMU's own doStep (target <= 2 us, nodelets), and the
+                                    full hybrid_urban mission native then with the battery and the
+                                    e-machine as exported FMUs (wall time ratio, target within 10 %;
+                                    summaries equal); N pairs one after the other (default 1)
+                                    (twin_tools.bench.fmu)
 Results: printed as Markdown tables and written to docs/bench/<name>.md (name = the bench, with
 the engine for ambient, hybrid and rates: one file per engine) with the command, the date and the
 machine: commit it with the code it measured. A partial run (--until, --duration below 1800 s,
@@ -59,6 +65,7 @@ import sys
 import time
 
 from twin_tools.bench import cosim as bench_cosim
+from twin_tools.bench import fmu as bench_fmu_mod
 from twin_tools.bench import soak as bench_soak
 from twin_tools.bench import study as bench_study
 from twin_tools.bench.study import cell, study_checks, study_table
@@ -384,7 +391,7 @@ def main():
     ap = argparse.ArgumentParser(prog="twin bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", nargs="?", default="map",
-                    choices=["map", "1d", "engine", "ambient", "hybrid", "study", "rates", "cosim", "soak"])
+                    choices=["map", "1d", "engine", "ambient", "hybrid", "study", "rates", "cosim", "soak", "fmu"])
     ap.add_argument("--engines", default="map,1d", help="ambient, hybrid: engine models, comma-separated")
     ap.add_argument("--engine", default="1d", choices=["1d", "map"], help="study: the engine model (default 1d)")
     ap.add_argument("--slurm", action="store_true", help="study: the sweep as a Slurm job array (twin sweep --slurm)")
@@ -393,6 +400,7 @@ def main():
     ap.add_argument("--jobs", type=int, default=None, help="ambient, hybrid (default 1), study (default 2), "
                                                            "soak (default 4): runs at a time")
     ap.add_argument("--runs", type=int, default=20, help="soak: missions")
+    ap.add_argument("--pairs", type=int, default=1, help="fmu: native + FMU mission pairs, one after the other")
     ap.add_argument("--until", type=float, default=0.0, help="simulate only the first S seconds")
     ap.add_argument("--duration", type=float, default=1800.0,
                     help="engine: WHTC seconds to run (default the whole 1800 s)")
@@ -407,6 +415,8 @@ def main():
         return bench_study.bench_study(a)
     if a.what == "cosim":
         return bench_cosim.bench_cosim(a, REPO)
+    if a.what == "fmu":
+        return bench_fmu_mod.bench_fmu(a)
     return {"map": bench_map, "1d": bench_1d, "engine": bench_engine, "ambient": bench_ambient, "hybrid": bench_hybrid, "rates": bench_rates}[a.what](a)
 
 

@@ -161,8 +161,23 @@ def present_participants(scenario, given):
     return present, arch
 
 
+# Launch arguments that select what a native participant reads by name (strings under /scenario/)
+# and that an FMU cannot receive: the FMU participant hands an FMU the numeric scenario values
+# only (its Real parameters scenario.<name>, src/fmi/README.md); an FMI 2.0 String parameter is
+# not passed. argument -> (its neutral value, the participants whose models read it): start
+# (cosim::scenarioWarmStart: src/{vehicle,aftertreatment,hvac,battery,cooling}/node), pack
+# (/scenario/battery_pack: src/battery/node). The twin's exported FMUs start cold and carry the
+# pack of config/battery.yaml; a supplier's FMU has its own. With an FMU serving such a
+# participant, any other value is refused here (it would be silently ignored).
+FMU_UNREACHABLE = {
+    "start": ("cold", ("vehicle", "aftertreatment", "hvac", "battery", "cooling")),
+    "pack": ("", ("battery",)),
+}
+
+
 def check_fmu(scenario, given):
-    """<participant>_fmu only for a participant of the scenario; _fmu_map only with its _fmu."""
+    """<participant>_fmu only for a participant of the scenario; _fmu_map only with its _fmu; no
+    FMU_UNREACHABLE argument the FMU would not receive."""
     present, arch = present_participants(scenario, given)
     for p in PARTICIPANTS:
         if p + "_fmu_map" in given and p + "_fmu" not in given:
@@ -170,6 +185,14 @@ def check_fmu(scenario, given):
         if p + "_fmu" in given and p not in present:
             sys.exit("twin: argument '%s_fmu': %s is not a participant of %s (architecture %s, thermal %s, hvac %s)"
                      % (p, p, scenario, arch, given.get("thermal", "true"), given.get("hvac", "on")))
+    for arg, (neutral, readers) in sorted(FMU_UNREACHABLE.items()):
+        value = given.get(arg, neutral)
+        for p in readers:
+            if value != neutral and p + "_fmu" in given:
+                sys.exit("twin: argument '%s:=%s' cannot reach %s_fmu:=%s: an FMU receives the scenario's numeric "
+                         "values only (its parameters scenario.<name>), not %s; the FMU runs as it was exported "
+                         "(the twin's FMUs: start:=cold, the pack of config/battery.yaml). Drop %s:= or %s_fmu:="
+                         % (arg, value, p, given[p + "_fmu"], arg, arg, p))
 
 
 def check_remote(scenario, given):

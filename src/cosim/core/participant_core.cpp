@@ -231,6 +231,12 @@ void ParticipantCore::onCommand(const Command& c) {
       if (failed_) { report(St::Error, c.step, 0, error_); return; }
       if (!configured_ || !checkPeriod(c.dt_s)) return;
       try {
+        h_.runEndKnown(c.t);
+      } catch (const std::exception& e) {
+        fail(e.what());
+        return;
+      }
+      try {
         h_.topicsAnnounced(c.table.topics, c.table.participants);
       } catch (const std::exception& e) {
         fail(std::string("subscribing to the announced topics failed: ") + e.what());

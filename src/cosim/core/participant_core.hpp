@@ -5,8 +5,10 @@
 //                    (errors -> ERROR status "name: ..." naming file and key)
 //   onTick()         every 100 ms wall. Until START: ANNOUNCE(outputs, inputs, observer, mission
 //                    duration), or ERROR again while failed
-//   SYNC r           checks the period against the base step (must be an integer multiple), asks
-//                    the hooks for missing links: READY(r, step_multiple, inputs) or WAITING(r, links)
+//   SYNC r           checks the period against the base step (must be an integer multiple), hands
+//                    the run's end as known to the hooks (runEndKnown: an exception is ERROR, the
+//                    run ends before step 0), asks the hooks for missing links:
+//                    READY(r, step_multiple, inputs) or WAITING(r, links)
 //   START            takes the table: own group, each input's held-value rule (HeldRule, from its
 //                    producer's period and group), each output's readers, the report window W;
 //                    publishes the outputs stamped t_0
@@ -75,6 +77,10 @@ class ParticipantHooks {
   virtual bool readyToClose(Nanos t_end) const = 0;
   /// Links (inputs without publisher, outputs short of subscribers) not connected; "" = all.
   virtual std::string missingLinks() const = 0;
+  /// At each SYNC, first: the end of the run as the stepper knows it once everyone announced
+  /// (until_s, or the longest mission announced, the earlier of both; 0 = unknown). A
+  /// participant that cannot run that far throws (its message names why): ERROR before step 0.
+  virtual void runEndKnown(Nanos t_end) {}
   /// At each SYNC, before the link check: every output topic and every participant of the run
   /// (all have announced). An observer may add inputs here (the recorder recording everything).
   virtual void topicsAnnounced(const std::vector<std::string>& topics,

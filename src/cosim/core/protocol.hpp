@@ -5,7 +5,10 @@
 //
 // Sequence (see stepper_core.hpp and participant_core.hpp for each side):
 //   participant: ANNOUNCE(outputs, inputs, observer, mission_duration_s) every 100 ms until STARTed
-//   stepper:     SYNC round r (dt) ...  participant: READY(r, step_multiple, inputs) | WAITING(r, links)
+//   stepper:     SYNC round r (dt, t = the run's end as known: until_s or the longest mission
+//                announced, the earlier of both; 0 = unknown)
+//                participant: READY(r, step_multiple, inputs) | WAITING(r, links) | ERROR (it
+//                cannot run to that end)
 //   stepper:     START (table: topic -> producer multiple and group; participant -> multiple and
 //                group; who reads which topic; the report window W)
 //                every participant publishes its outputs stamped t_0 = 0
@@ -65,7 +68,7 @@ struct Command {
   uint64_t step = 0;           // GRANT: horizon K (steps k < K); FINISH, ABORT: k_end; SYNC: round
   uint64_t observer_step = 0;  // GRANT: horizon of the observers
   uint64_t confirmed = 0;      // GRANT: lower bound L of the run's end step (deferred outputs)
-  Nanos t = 0;                 // t_K (GRANT), t_end (FINISH, ABORT)
+  Nanos t = 0;                 // t_K (GRANT), t_end (FINISH, ABORT), the run's end as known (SYNC; 0 = unknown)
   double dt_s = 0.0;           // base step [s]
   std::string reason;          // ABORT / FINISH
   Table table;                 // START (final), SYNC (topics final)

@@ -64,6 +64,13 @@ double StepperCore::missionDuration_s() const {
   return d;
 }
 
+Nanos StepperCore::runEnd() const {
+  const double mission_s = missionDuration_s();
+  double end_s = cfg_.until_s > 0.0 ? cfg_.until_s : 0.0;
+  if (mission_s > 0.0) end_s = end_s > 0.0 ? std::min(end_s, mission_s) : mission_s;
+  return toNanos(end_s);
+}
+
 void StepperCore::begin(double wall_s) {
   wall0_ = phase_since_ = wall_s;
   clockAt(0, wall_s);
@@ -197,6 +204,7 @@ void StepperCore::sendSync() {
   Command c;
   c.command = Cmd::Sync;
   c.step = sync_round_;
+  c.t = runEnd();  // everyone has announced: the end as known before step 0
   c.dt_s = cfg_.dt_s;
   fillTable(c.table, false);  // everyone has announced: observers learn the topics to read from it
   tr_.sendCommand(c);

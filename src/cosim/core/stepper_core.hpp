@@ -7,7 +7,10 @@
 //            observers (the recorder) always go into the last group. A participant missing from
 //            `order` or a topic published by two participants ABORTs the run here, before step 0.
 //  Sync      SYNC rounds until one round in which every participant answered READY (with its
-//            step multiple and final inputs); then START with the table (topic -> producer
+//            step multiple and final inputs). Each SYNC also carries the end of the run as known
+//            once everyone announced (runEnd(): until_s or the longest mission announced, the
+//            earlier of both; 0 = unknown), so that a participant that cannot run that far (an
+//            FMU's stop time) refuses before step 0 with an ERROR; then START with the table (topic -> producer
 //            multiple and group, participant -> multiple and group, readers of each topic, the
 //            report window W) and the first GRANT. Each SYNC carries the table as known so far:
 //            its topics are final (everyone has announced), so an observer that records
@@ -135,6 +138,9 @@ class StepperCore {
   const std::string& reason() const { return reason_; }
   /// Longest mission duration announced (0 = unknown).
   double missionDuration_s() const;
+  /// The end of the run as known before step 0 [ns]: until_s, or the longest mission announced,
+  /// the earlier of both when both are known; 0 = unknown (SYNC carries it).
+  Nanos runEnd() const;
   /// Wall time of begin(), then of the start of step 0.
   double wallStart_s() const { return wall0_; }
   const std::map<std::string, Peer>& peers() const { return peers_; }

@@ -2,7 +2,9 @@
 
 #include <sys/stat.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 
@@ -170,12 +172,16 @@ void FmuParticipant::loadFmu(const std::string& out_dir) {
   fmu_ = LoadedFmu::load(fmu_file_, dir + "/" + name(), map_.interface);
 }
 
-void FmuParticipant::checkStopTime() const {
-  double until_s = 0.0;
+void FmuParticipant::checkRunEnd(double end_s) {
   const auto& stop = fmu_->modelDescription().defaultExperiment().stop_time_s;
-  if (nh_.getParam("/stepper/until_s", until_s) && until_s > 0.0 && stop && *stop < until_s)
-    throw FmuError(fmu_file_, "DefaultExperiment stopTime " + std::to_string(*stop) +
-                                  " s is before the end of this run (until " + std::to_string(until_s) + " s)");
+  if (!stop || !(end_s > 0.0) || *stop >= end_s) return;
+  double until_s = 0.0;
+  nh_.getParam("/stepper/until_s", until_s);
+  const bool by_until = until_s > 0.0 && until_s <= end_s;  // else the mission ends first
+  char what[160];
+  std::snprintf(what, sizeof what, "DefaultExperiment stopTime %g s is before the end of this run (%s %g s)", *stop,
+                by_until ? "until" : "the mission's end at", end_s);
+  throw FmuError(fmu_file_, what);
 }
 
 void FmuParticipant::onLog(const std::string& instance, fmi2Status status, const std::string& category,
@@ -264,36 +270,30 @@ void FmuParticipant::configure() {
   if (!nh_.getParam("/scenario/out_dir", out_dir) || out_dir.empty())
     throw InputError("/scenario/out_dir (rosparam)", "out_dir", "missing: the FMU is extracted beside the bag");
   loadFmu(out_dir);
-  checkStopTime();
   instantiate();
   makePorts();
+  exchange_ = std::make_unique<FmuExchange>(map_, in_port_of_, out_port_of_, in_refs_, out_refs_, *inst_);
   writeResolved(out_dir);
   readOutputs();
 }
 
 void FmuParticipant::readOutputs() {
-  for (std::size_t i = 0; i < map_.outputs.size(); ++i) {
-    const Binding& b = map_.outputs[i];
-    double v = 0.0;
-    if (b.type == VarType::kReal) v = b.fieldFromFmu(inst_->getReal(out_refs_[i]));
-    else if (b.type == VarType::kInteger) v = inst_->getInteger(out_refs_[i]);
-    else v = inst_->getBoolean(out_refs_[i]) ? 1.0 : 0.0;
-    out_port_of_[i]->set(b.field, b.element, v);
-    if (static_cast<int>(i) == mission_finished_output_) mission_finished_ = v != 0.0;
-  }
+  exchange_->getOutputs();
+  if (mission_finished_output_ >= 0) mission_finished_ = exchange_->output(static_cast<std::size_t>(mission_finished_output_)) != 0.0;
 }
 
 void FmuParticipant::step(const ros::Time& t, double dt_s) {
-  for (std::size_t i = 0; i < map_.inputs.size(); ++i) {
-    const Binding& b = map_.inputs[i];
-    const double v = in_port_of_[i]->get(t, b.field, b.element);
-    if (b.type == VarType::kReal) inst_->setReal(in_refs_[i], b.fmuFromField(v));
-    else if (b.type == VarType::kInteger) inst_->setInteger(in_refs_[i], static_cast<int>(std::lround(v)));
-    else inst_->setBoolean(in_refs_[i], v != 0.0);
-  }
+  using Clock = std::chrono::steady_clock;
+  const auto w0 = Clock::now();
+  exchange_->setInputs(t);
+  const auto w1 = Clock::now();
   if (cs_) cs_->doStep(dt_s);
   else me_->doStep(dt_s);
+  const auto w2 = Clock::now();
   readOutputs();
+  const std::chrono::duration<double> fmu = w2 - w1, rest = (w1 - w0) + (Clock::now() - w2);
+  do_step_timing_.add(fmu.count());
+  overhead_timing_.add(rest.count());
 }
 
 void FmuParticipant::publishOutputs(const ros::Time& t) {
@@ -309,6 +309,11 @@ void FmuParticipant::diagnosticValues(cosim::core::Nanos, std::vector<cosim::cor
   kv.push_back({"fmu_log_warnings", std::to_string(log_warnings_)});
   kv.push_back({"fmu_log_errors", std::to_string(log_errors_)});
   if (!last_log_.empty()) kv.push_back({"fmu_last_log", last_log_});
+  using cosim::core::formatNumber;
+  kv.push_back({"fmu_steps", std::to_string(do_step_timing_.count())});
+  kv.push_back({"fmu_do_step_s", formatNumber(do_step_timing_.sum_s())});
+  kv.push_back({"fmu_do_step_us_median", formatNumber(1e6 * do_step_timing_.median_s())});
+  kv.push_back({"fmu_overhead_us_median", formatNumber(1e6 * overhead_timing_.median_s())});
   if (me_) {
     kv.push_back({"fmu_time_events", std::to_string(me_->timeEvents())});
     kv.push_back({"fmu_state_events", std::to_string(me_->stateEvents())});

@@ -7,15 +7,20 @@
 // Parameters (private): fmu_file [path], fmu_map_file [path, "" = none], fmu_map/ (the mapping
 // file's keys, fmu_mapping.hpp), cosim/macro_step_s and cosim/thread as every participant (the
 // YAML of the participant it replaces). Reads /scenario/out_dir (the FMU is extracted into
-// <out>/fmu/<name>/), /scenario/<name> (parameters scenario.<name>), /stepper/until_s (the
-// mission end the FMU's stopTime is checked against), the wiring (/twin/wiring/).
+// <out>/fmu/<name>/), /scenario/<name> (parameters scenario.<name>), /stepper/until_s (to name
+// what ends the run), the wiring (/twin/wiring/).
 //
 // configure(), before step 0: the FMU loaded and checked, the mapping resolved, the instance
 // made (CoSimulation, or ModelExchange integrated by CVODE), parameters set in initialisation
 // mode, the resolved mapping written to <out>/resolved_config/<name>_fmu.csv. Any rejection
-// is the run's error naming the FMU file or the mapping file and key.
+// is the run's error naming the FMU file or the mapping file and key. At SYNC, still before
+// step 0: the FMU's stopTime against the run's end (until, else the mission's end).
 // step(t, P): the held inputs through their unit conversions into the FMU, doStep(P), the
-// outputs back; an FMU failure (status other than OK/Warning, NaN output, a step past its stop
+// outputs back (FmuExchange: one message lookup per input topic, one set and one get call per
+// variable type); /diagnostics has fmu_steps, fmu_do_step_s (wall time inside doStep: the FMU's
+// own compute; the step's compute time the lock-step counts minus this is the participant's
+// overhead) and the medians per step of both, fmu_do_step_us_median and fmu_overhead_us_median
+// (step_timing.hpp: robust to preemption on a shared machine; twin bench fmu); an FMU failure (status other than OK/Warning, NaN output, a step past its stop
 // time) throws hbt::ModelDivergence naming FMU, call or variable and time: the run stops, the
 // bag is closed (the participant's usual failure path). A hung doStep is the stepper's step
 // timeout (docs/protocol.md).
@@ -29,7 +34,9 @@
 #include "fmi/cs_instance.hpp"
 #include "fmi/fmu_mapping.hpp"
 #include "fmi/me_instance.hpp"
+#include "fmi/node/fmu_exchange.hpp"
 #include "fmi/node/message_port.hpp"
+#include "fmi/step_timing.hpp"
 
 namespace hbt::fmi {
 
@@ -55,12 +62,14 @@ class FmuParticipant : public cosim::Participant {
   /// The end of the mission as the participant it replaces announces it: an output field
   /// `mission_finished` (the vehicle's) that the FMU sets true; never for any other FMU.
   bool finished() const override { return mission_finished_; }
+  /// The FMU's DefaultExperiment stopTime before the run's end (until, or the mission's end when
+  /// until is 0: the stepper's SYNC) is an FmuError naming the FMU: the run ends before step 0.
+  void checkRunEnd(double end_s) override;
 
  private:
   MappingSpec readSpec() const;
   MappingContext readContext() const;
   void loadFmu(const std::string& out_dir);
-  void checkStopTime() const;
   void instantiate();
   void makePorts();
   void writeResolved(const std::string& out_dir) const;
@@ -78,9 +87,13 @@ class FmuParticipant : public cosim::Participant {
   std::map<std::string, std::unique_ptr<InPort>> in_ports_;    // "/producer/key" -> port
   std::vector<InPort*> in_port_of_;    // per map_.inputs
   std::vector<OutPort*> out_port_of_;  // per map_.outputs
+  std::unique_ptr<FmuExchange> exchange_;  // the step's exchange, planned in configure()
   int mission_finished_output_ = -1;  // index in map_.outputs of a field mission_finished, -1: none
   bool mission_finished_ = false;
   long log_warnings_ = 0, log_errors_ = 0;
+  // wall time [s, steady clock] of each step inside doStep (the FMU's own compute) and outside
+  // it (the overhead: exchange of inputs and outputs); /diagnostics
+  StepTiming do_step_timing_, overhead_timing_;
   std::string last_log_;
 };
 

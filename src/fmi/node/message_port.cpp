@@ -15,13 +15,7 @@
 namespace hbt::fmi {
 namespace {
 
-/// How one field is stored in the C++ message.
-enum class Store { kDouble, kFloat, kU8, kI8, kU16, kI16, kU32, kI32, kU64, kI64, kVecDouble, kOther };
-
-struct Slot {
-  Store store = Store::kOther;
-  std::size_t offset = 0;
-};
+using Slot = FieldSlot;
 
 /// The Stream of Serializer<M>::allInOne: records the offset and storage of every field visited.
 class SlotVisitor {
@@ -108,51 +102,11 @@ struct TypeInfo {
   }
 };
 
-template <class T>
-T& at(void* msg, const Slot& s) {
-  return *reinterpret_cast<T*>(static_cast<char*>(msg) + s.offset);
-}
-template <class T>
-const T& at(const void* msg, const Slot& s) {
-  return *reinterpret_cast<const T*>(static_cast<const char*>(msg) + s.offset);
-}
-
-void write(void* msg, const Slot& s, int element, double v) {
-  switch (s.store) {
-    case Store::kDouble: at<double>(msg, s) = v; break;
-    case Store::kU8: at<uint8_t>(msg, s) = static_cast<uint8_t>(std::lround(v)); break;
-    case Store::kI8: at<int8_t>(msg, s) = static_cast<int8_t>(std::lround(v)); break;
-    case Store::kU16: at<uint16_t>(msg, s) = static_cast<uint16_t>(std::lround(v)); break;
-    case Store::kI16: at<int16_t>(msg, s) = static_cast<int16_t>(std::lround(v)); break;
-    case Store::kU32: at<uint32_t>(msg, s) = static_cast<uint32_t>(std::llround(v)); break;
-    case Store::kI32: at<int32_t>(msg, s) = static_cast<int32_t>(std::lround(v)); break;
-    case Store::kU64: at<uint64_t>(msg, s) = static_cast<uint64_t>(std::llround(v)); break;
-    case Store::kI64: at<int64_t>(msg, s) = static_cast<int64_t>(std::llround(v)); break;
-    case Store::kVecDouble: at<std::vector<double>>(msg, s).at(static_cast<std::size_t>(element)) = v; break;
-    default: throw std::logic_error("field not writable");
-  }
-}
-
-double read(const void* msg, const Slot& s, int element, const std::string& topic) {
-  switch (s.store) {
-    case Store::kDouble: return at<double>(msg, s);
-    case Store::kU8: return at<uint8_t>(msg, s);
-    case Store::kI8: return at<int8_t>(msg, s);
-    case Store::kU16: return at<uint16_t>(msg, s);
-    case Store::kI16: return at<int16_t>(msg, s);
-    case Store::kU32: return at<uint32_t>(msg, s);
-    case Store::kI32: return at<int32_t>(msg, s);
-    case Store::kU64: return static_cast<double>(at<uint64_t>(msg, s));
-    case Store::kI64: return static_cast<double>(at<int64_t>(msg, s));
-    case Store::kVecDouble: {
-      const auto& vec = at<std::vector<double>>(msg, s);
-      if (element < 0 || static_cast<std::size_t>(element) >= vec.size())
-        throw ModelDivergence(topic, "element " + std::to_string(element),
-                              "the message has " + std::to_string(vec.size()) + " elements");
-      return vec[static_cast<std::size_t>(element)];
-    }
-    default: throw std::logic_error("field not readable");
-  }
+template <class M>
+FieldSlot slotOf(std::size_t field, int element) {
+  FieldSlot s = TypeInfo<M>::get().slots.at(field);
+  s.element = element;
+  return s;
 }
 
 template <class M>
@@ -160,9 +114,11 @@ class TypedOut : public OutPort {
  public:
   explicit TypedOut(cosim::Output out) : out_(std::move(out)) {}
   const MessageLayout& layout() const override { return TypeInfo<M>::get().layout; }
-  void set(std::size_t field, int element, double v) override { write(&msg_, TypeInfo<M>::get().slots.at(field), element, v); }
+  void set(std::size_t field, int element, double v) override { writeField(&msg_, slot(field, element), v); }
+  FieldSlot slot(std::size_t field, int element) const override { return slotOf<M>(field, element); }
+  void* message() override { return &msg_; }
   void resize(std::size_t field, std::size_t n) override {
-    at<std::vector<double>>(&msg_, TypeInfo<M>::get().slots.at(field)).resize(n);
+    detail::fieldAt<std::vector<double>>(&msg_, TypeInfo<M>::get().slots.at(field)).resize(n);
   }
   void publish(const ros::Time& t) override {
     auto m = boost::make_shared<M>(msg_);
@@ -180,9 +136,9 @@ class TypedIn : public InPort {
  public:
   explicit TypedIn(cosim::Input<M>& in) : in_(in) {}
   const MessageLayout& layout() const override { return TypeInfo<M>::get().layout; }
-  double get(const ros::Time& t, std::size_t field, int element) const override {
-    return read(&in_.at(t), TypeInfo<M>::get().slots.at(field), element, in_.topic());
-  }
+  FieldSlot slot(std::size_t field, int element) const override { return slotOf<M>(field, element); }
+  const void* message(const ros::Time& t) const override { return &in_.at(t); }
+  const std::string& topic() const override { return in_.topic(); }
 
  private:
   cosim::Input<M>& in_;

@@ -9,7 +9,8 @@
  * Variants (compile definitions): HBT_FMU_OMIT_DO_STEP (no fmi2DoStep export),
  * HBT_FMU_ERROR_FROM_S=t (fmi2DoStep returns fmi2Error from communication time t [s] on),
  * HBT_FMU_NAN_FROM_S=t (T becomes NaN from t on), HBT_FMU_HANG_FROM_S=t (fmi2DoStep never returns
- * from t on: it sleeps, as a hung tool would). */
+ * from t on: it sleeps, as a hung tool would), HBT_FMU_SET_ERROR_FROM_S=t (fmi2SetReal returns
+ * fmi2Error from t on). */
 #include <math.h>
 #ifdef HBT_FMU_HANG_FROM_S
 #include <time.h>
@@ -170,6 +171,12 @@ hbt_fmi2_SetReal_fn fmi2SetReal;
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Real v[]) {
   Instance* m = (Instance*)c;
   size_t i;
+#ifdef HBT_FMU_SET_ERROR_FROM_S
+  if (m->time_s >= HBT_FMU_SET_ERROR_FROM_S) {
+    log_msg(m, fmi2Error, "error", "deliberate failure (%s)", "test variant set_error_at_2s");
+    return fmi2Error;
+  }
+#endif
   for (i = 0; i < n; ++i) {
     switch (vr[i]) {
       case VR_Q: m->Q_kW = v[i]; break;
