@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,11 +55,13 @@ inline void initializeAtAmbient(CsInstance& inst, double ambient_c) {
   inst.exitInitializationMode();
 }
 
-/// Every output variable of the instance's FMU, resolved by name from its modelDescription.xml.
-inline std::vector<VariableRef> outputRefs(const CsInstance& inst, const LoadedFmu& fmu) {
+/// Every output variable of the instance's FMU (of type `only`, when given), resolved by name
+/// from its modelDescription.xml.
+inline std::vector<VariableRef> outputRefs(const CsInstance& inst, const LoadedFmu& fmu,
+                                           std::optional<VarType> only = std::nullopt) {
   std::vector<VariableRef> out;
   for (const auto& var : fmu.modelDescription().variables())
-    if (var.causality == Causality::kOutput) out.push_back(inst.gettable(var.name, var.type));
+    if (var.causality == Causality::kOutput && (!only || var.type == *only)) out.push_back(inst.gettable(var.name, var.type));
   return out;
 }
 

@@ -4,7 +4,7 @@
 // resources/engine_1d.yaml and the three files its files/ section names, read as the factory's
 // make1D reads them (Engine1DParams::load, every key checked and required), each from resources/
 // under its own file name; so are the reference map engine's curves and the turbocharger's maps.
-// The pipe solver is the file's engine_1d/solver (the launch argument solver is the node's).
+// The warning thresholds: its diagnostics: section. The pipe solver is the file's engine_1d/solver (the launch argument solver is the node's).
 #include <filesystem>
 #include <memory>
 
@@ -39,7 +39,9 @@ engine_1d::Engine1DParams readParams(const std::string& dir) {
 }  // namespace
 
 std::unique_ptr<ExportedModel> makeExportedModel(const std::string& resources_dir) {
-  return std::make_unique<EngineFmu>(std::make_unique<engine_1d::Engine1DModel>(readParams(resources_dir), resources_dir));
+  const auto warnings = readResourceWarnings<engine::EngineWarnings>(resources_dir + "/engine_1d.yaml", "1d");
+  return std::make_unique<EngineFmu>(std::make_unique<engine_1d::Engine1DModel>(readParams(resources_dir), resources_dir),
+                                     warnings);
 }
 
 }  // namespace hbt::fmi::exported

@@ -2,7 +2,8 @@
 // (../map_engine_model.hpp) behind the engine participant's FMU side (src/engine/engine_fmu.hpp,
 // the conversion engine_interface/engine_io.hpp the node uses). The parameters come from
 // resources/engine_map.yaml with the node's checks (the factory's makeMap); its full-load, fuel,
-// PT1 and NOx map files are read from resources/ under their own file names.
+// PT1 and NOx map files are read from resources/ under their own file names; the warning thresholds
+// from its diagnostics: section.
 #include <memory>
 
 #include "engine_map_fmu_variables.hpp"  // first: generated::VariablesModel, EngineFmu's base
@@ -16,7 +17,8 @@ std::unique_ptr<ExportedModel> makeExportedModel(const std::string& resources_di
   auto p = readResourceParams<engine_map::MapEngineParams>(resources_dir + "/engine_map.yaml");
   for (std::string* file : {&p.full_load_file, &p.fuel_map_file, &p.pt1_file, &p.nox_map_file})
     if (!file->empty()) *file = resourceFile(resources_dir, *file);  // nox_map_file "": the constant index
-  return std::make_unique<EngineFmu>(std::make_unique<engine_map::MapEngineModel>(p, resources_dir));
+  const auto warnings = readResourceWarnings<engine::EngineWarnings>(resources_dir + "/engine_map.yaml", "map");
+  return std::make_unique<EngineFmu>(std::make_unique<engine_map::MapEngineModel>(p, resources_dir), warnings);
 }
 
 }  // namespace hbt::fmi::exported

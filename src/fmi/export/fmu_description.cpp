@@ -129,6 +129,28 @@ void readOutputs(const YAML::Node& root, const std::string& spec, const std::str
   }
 }
 
+// `warnings:` (optional) [{name: <participant>.warning.<name>, description}]: Boolean outputs,
+// true while the participant's warning <name> is raised (src/fmi/README.md, naming convention)
+void readWarnings(const YAML::Node& root, const std::string& spec, FmuDescription& d) {
+  if (!root["warnings"]) return;
+  for (const auto& w : root["warnings"]) {
+    ExportedVariable v;
+    v.name = required(w, "name", spec).as<std::string>();
+    const auto dot = v.name.find(".warning.");
+    if (dot == std::string::npos || dot == 0 || v.name.find('.', dot + 9) != std::string::npos)
+      throw InputError(spec, "warnings/" + v.name, "not <participant>.warning.<name>");
+    checkTopic(v.name.substr(0, dot + 8), false, spec, "warnings/" + v.name);
+    checkTopic("warning." + v.name.substr(dot + 9), false, spec, "warnings/" + v.name);
+    v.group = cppGroup(v.name.substr(0, dot + 8));
+    v.member = v.name.substr(dot + 9);
+    v.kind = FieldKind::kBool;
+    v.causality = "output";
+    v.unit = unitOfName(v.member);
+    v.description = required(w, "description", spec).as<std::string>();
+    d.variables.push_back(v);
+  }
+}
+
 void readParameters(const YAML::Node& root, const std::string& spec, FmuDescription& d) {
   for (const auto& p : required(root, "parameters", spec)) {
     ExportedVariable v;
@@ -312,6 +334,7 @@ FmuDescription FmuDescription::read(const std::string& spec, const std::string& 
   for (const auto& k : required(root, "data_files", spec)) d.data_files.push_back(dataFile(k, configs, d.config_file, spec));
   readInputs(root, spec, msg_dir, d);
   readOutputs(root, spec, msg_dir, d);
+  readWarnings(root, spec, d);
   readParameters(root, spec, d);
   std::set<std::string> names;
   for (const auto& v : d.variables)

@@ -4,6 +4,7 @@
 //   input  <producer>.<key>.<field>     a field the participant reads from /<producer>/<key>;
 //          <a>|<b>.<key>.<field>        ... from the first of the alternative producers a, b that runs
 //   output <participant>.<key>.<field>  every field of the message it publishes on /<participant>/<key>
+//   output <participant>.warning.<name> Boolean, true while its warning <name> is raised (spec `warnings`)
 //   parameter scenario.<name>           a scenario value /scenario/<name> it reads
 // Units: the field's, as its name suffix states (unitOfName, message_layout.hpp); descriptions:
 // the comment of the field's line in its .msg; value references 0.. in declaration order.

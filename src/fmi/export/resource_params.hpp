@@ -6,6 +6,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "common/params.hpp"
 #include "common/yaml_params.hpp"
@@ -38,6 +39,27 @@ Params readResourceParams(const std::string& yaml_file) {
   p.declare(ps);
   applyResourceParams(ps, yaml_file);
   return p;
+}
+
+/// A participant's warning thresholds W (declare(ParamSet&, declare_args...)) from the
+/// `diagnostics:` section of its YAML in resources/, read as cosim::Participant::readWarningThresholds
+/// reads them for the node: that section only, every declared key required.
+template <class W, class... Args>
+W readResourceWarnings(const std::string& yaml_file, Args&&... declare_args) {
+  static const std::string kSection = "diagnostics/";
+  W w;
+  ParamSet ps;
+  ps.setPrefix(kSection);
+  w.declare(ps, std::forward<Args>(declare_args)...);
+  ps.setPrefix("");
+  const ParamSource all = readYamlParams(yaml_file);
+  ParamSource own;
+  own.file = all.file;
+  for (const auto& kv : all.values)
+    if (kv.first.rfind(kSection, 0) == 0) own.values.insert(kv);
+  applyParams(ps, own);
+  requireKeys(ps, own);
+  return w;
 }
 
 /// resources_dir/<file name of configured_path>

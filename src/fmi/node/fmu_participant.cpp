@@ -197,6 +197,7 @@ void FmuParticipant::onLog(const std::string& instance, fmi2Status status, const
     ROS_ERROR_STREAM(name() << ": " << line);
   }
   last_log_ = line;
+  step_log_ = line;
 }
 
 void FmuParticipant::instantiate() {
@@ -274,7 +275,20 @@ void FmuParticipant::configure() {
   makePorts();
   exchange_ = std::make_unique<FmuExchange>(map_, in_port_of_, out_port_of_, in_refs_, out_refs_, *inst_);
   writeResolved(out_dir);
+  declareWarnings();
   readOutputs();
+}
+
+void FmuParticipant::declareWarnings() {
+  for (const auto& w : warningOutputs(fmu_->modelDescription(), name()))
+    // no on-delay: the FMU holds the persistence itself
+    warnings_.push_back({w, inst_->gettable(w.variable, VarType::kBoolean), &addWarning(w.name, 0.0)});
+}
+
+void FmuParticipant::checkWarnings(cosim::core::Nanos t) {
+  for (auto& w : warnings_)
+    if (w.warning->update(t, inst_->getBoolean(w.ref))) w.warning->setMessage(warningMessage(fmu_file_, w.output, step_log_));
+  step_log_.clear();
 }
 
 void FmuParticipant::readOutputs() {

@@ -24,6 +24,8 @@
 // time) throws hbt::ModelDivergence naming FMU, call or variable and time: the run stops, the
 // bag is closed (the participant's usual failure path). A hung doStep is the stepper's step
 // timeout (docs/protocol.md).
+// Warnings: each Boolean output `<name>.warning.<w>` of the FMU is this participant's warning <w>
+// (fmu_warnings.hpp), raised while the FMU holds it true, judged after every step and at t_0.
 #pragma once
 #include <map>
 #include <memory>
@@ -33,6 +35,7 @@
 #include "cosim/participant.hpp"
 #include "fmi/cs_instance.hpp"
 #include "fmi/fmu_mapping.hpp"
+#include "fmi/fmu_warnings.hpp"
 #include "fmi/me_instance.hpp"
 #include "fmi/node/fmu_exchange.hpp"
 #include "fmi/node/message_port.hpp"
@@ -59,6 +62,7 @@ class FmuParticipant : public cosim::Participant {
   void publishOutputs(const ros::Time& t) override;
   void step(const ros::Time& t, double dt_s) override;
   void diagnosticValues(cosim::core::Nanos t, std::vector<cosim::core::KeyValue>& kv) override;
+  void checkWarnings(cosim::core::Nanos t) override;
   /// The end of the mission as the participant it replaces announces it: an output field
   /// `mission_finished` (the vehicle's) that the FMU sets true; never for any other FMU.
   bool finished() const override { return mission_finished_; }
@@ -74,6 +78,7 @@ class FmuParticipant : public cosim::Participant {
   void makePorts();
   void writeResolved(const std::string& out_dir) const;
   void readOutputs();
+  void declareWarnings();
   void onLog(const std::string& instance, fmi2Status status, const std::string& category, const std::string& message);
 
   std::string fmu_file_;
@@ -95,6 +100,14 @@ class FmuParticipant : public cosim::Participant {
   // it (the overhead: exchange of inputs and outputs); /diagnostics
   StepTiming do_step_timing_, overhead_timing_;
   std::string last_log_;
+  std::string step_log_;  // the FMU's last log message since the last checkWarnings ("" = none)
+  // the FMU's warning outputs (fmu_warnings.hpp), their refs and the participant's warnings
+  struct FmuWarning {
+    WarningOutput output;
+    VariableRef ref;
+    cosim::core::Warning* warning = nullptr;
+  };
+  std::vector<FmuWarning> warnings_;
 };
 
 }  // namespace hbt::fmi
