@@ -12,6 +12,10 @@ macro step 0.1 s) and in place of a native participant of hybrid_urban:
   temperature of the end of the same step (held over the step), so exactly
   T_b(t+P) = T_a(t+P) + (T_b(t) - T_a(t+P)) exp(-G P / C), with T_a exact; the Jacobi value (T_a(t))
   differs by far more than the tolerance, so the test sees the order.
+- A warning by the naming convention (the variant cooled_warning: Boolean output
+  mass_a.warning.cooled, true below 79.5 degC, the step that sets it logs so): mass_a's warning
+  `cooled`, raised at the first state at which the exact T is below 79.5 degC and active to the
+  end, its message naming the FMU, the variable and the FMU's log of that step.
 - In place of a native participant: hvac_fmu:= in baseline_urban (20 s) serves the hvac by the
   thermal mass (its ambient read from the vehicle, every other field declared not provided):
   the run completes with the others reading it, the cabin temperature is exact.
@@ -34,7 +38,7 @@ import unittest
 
 from twin_tools.launch import run_util
 from twin_tools.paths import REPO
-from twin_tools.report.diagnostics import read_diagnostics
+from twin_tools.report.diagnostics import read_diagnostics, warnings_list
 
 LAUNCH = os.path.join(REPO, "test", "fmi", "scenario", "fmu_scenario.launch")
 FMU_SOURCES = os.path.join(REPO, "test", "fmi", "fmus")
@@ -170,6 +174,21 @@ class FmuParticipant(unittest.TestCase):
         self.assertEqual(len(b), 51)
         self.assertLess(err, 1e-9)
         self.assertGreater(err_jacobi, 1e-5)  # the test tells the two orders apart
+
+    def test_fmu_warning_output_is_the_participants_warning(self):
+        out, st = self.run_scenario("warning", until=5.0, mass_a_fmu=os.path.join(FMUS, "cooled_warning.fmu"))
+        self.assertEqual(st["status"], "ok", st)
+        threshold_k = 273.15 + 79.5  # test/fmi/fmus/CMakeLists.txt, variant cooled_warning
+        stamps = [k * P_S for k in range(51)]
+        first = next(t for t in stamps if mass_exact(t) < threshold_k)  # 3.8 s (T crosses at 3.77 s)
+        w = [x for x in warnings_list(read_diagnostics(os.path.join(out, "run.bag"))) if x["node"] == "mass_a"]
+        print("\n  mass_a warning: %s" % w)
+        self.assertEqual([x["warning"] for x in w], ["cooled"])
+        self.assertAlmostEqual(w[0]["first_time_s"], first, delta=1e-9)
+        self.assertEqual(w[0]["raised"], 1)
+        self.assertAlmostEqual(w[0]["active_s"], 5.0 - first, delta=1e-9)
+        for fragment in ("cooled_warning.fmu", "mass_a.warning.cooled", "cooled below 79.5 degC"):
+            self.assertIn(fragment, w[0]["message"])
 
     def rejected(self, name, fragments, until=5.0, **args):
         out, st = self.run_scenario(name, until=until, **args)

@@ -197,7 +197,7 @@ void FmuParticipant::onLog(const std::string& instance, fmi2Status status, const
     ROS_ERROR_STREAM(name() << ": " << line);
   }
   last_log_ = line;
-  step_log_ = line;
+  step_log_ = message;  // the FMU's own text (the warning message names the FMU)
 }
 
 void FmuParticipant::instantiate() {

@@ -10,7 +10,9 @@
  * HBT_FMU_ERROR_FROM_S=t (fmi2DoStep returns fmi2Error from communication time t [s] on),
  * HBT_FMU_NAN_FROM_S=t (T becomes NaN from t on), HBT_FMU_HANG_FROM_S=t (fmi2DoStep never returns
  * from t on: it sleeps, as a hung tool would), HBT_FMU_SET_ERROR_FROM_S=t (fmi2SetReal returns
- * fmi2Error from t on). */
+ * fmi2Error from t on), HBT_FMU_WARN_BELOW_C=T (the Boolean output mass_a.warning.cooled,
+ * VR_WARNING: true while T < T degC, by the naming convention of the project's FMUs; the step
+ * that sets it logs "cooled below T degC" with status OK). */
 #include <math.h>
 #ifdef HBT_FMU_HANG_FROM_S
 #include <time.h>
@@ -22,8 +24,10 @@
 
 #define GUID "{4f1c2a7e-hbt-thermal-mass-1}"
 #define MAX_SUBSTEP_S 0.01
+#define HBT_FMU_STR2(x) #x
+#define HBT_FMU_STR(x) HBT_FMU_STR2(x)
 
-enum { VR_T, VR_Q, VR_T_AMB, VR_T_START, VR_STEPS, VR_INSULATED, VR_TIME, N_VR };
+enum { VR_T, VR_Q, VR_T_AMB, VR_T_START, VR_STEPS, VR_INSULATED, VR_TIME, VR_WARNING, N_VR };
 
 typedef struct {
   fmi2CallbackFunctions cb;
@@ -202,6 +206,12 @@ hbt_fmi2_GetBoolean_fn fmi2GetBoolean;
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Boolean v[]) {
   size_t i;
   for (i = 0; i < n; ++i) {
+#ifdef HBT_FMU_WARN_BELOW_C
+    if (vr[i] == VR_WARNING) {
+      v[i] = ((Instance*)c)->T_degC < HBT_FMU_WARN_BELOW_C;
+      continue;
+    }
+#endif
     if (vr[i] != VR_INSULATED) return fmi2Error;
     v[i] = ((Instance*)c)->insulated;
   }
@@ -243,6 +253,9 @@ hbt_fmi2_DoStep_fn fmi2DoStep;
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real t, fmi2Real h, fmi2Boolean no_prior) {
   Instance* m = (Instance*)c;
   const int n = (int)ceil(h / MAX_SUBSTEP_S - 1e-9);
+#ifdef HBT_FMU_WARN_BELOW_C
+  const int was_warm = m->T_degC >= HBT_FMU_WARN_BELOW_C;
+#endif
   const double dt = h / n;
   int i;
 #ifdef HBT_FMU_ERROR_FROM_S
@@ -272,6 +285,9 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real t, fmi2Real h, fmi2Boolean no_pr
 #endif
   m->time_s = t + h;
   ++m->steps;
+#ifdef HBT_FMU_WARN_BELOW_C
+  if (was_warm && m->T_degC < HBT_FMU_WARN_BELOW_C) log_msg(m, fmi2OK, "info", "cooled below %s degC", HBT_FMU_STR(HBT_FMU_WARN_BELOW_C));
+#endif
   return fmi2OK;
 }
 #endif
