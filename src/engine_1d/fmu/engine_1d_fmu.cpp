@@ -7,6 +7,8 @@
 // The warning thresholds: its diagnostics: section. The pipe solver is the file's engine_1d/solver (the launch argument solver is the node's).
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <utility>
 
 #include "engine_1d_fmu_variables.hpp"  // first: generated::VariablesModel, EngineFmu's base
 #include "engine/engine_fmu.hpp"
@@ -39,9 +41,9 @@ engine_1d::Engine1DParams readParams(const std::string& dir) {
 }  // namespace
 
 std::unique_ptr<ExportedModel> makeExportedModel(const std::string& resources_dir) {
-  const auto warnings = readResourceWarnings<engine::EngineWarnings>(resources_dir + "/engine_1d.yaml", "1d");
-  return std::make_unique<EngineFmu>(std::make_unique<engine_1d::Engine1DModel>(readParams(resources_dir), resources_dir),
-                                     warnings);
+  auto model = std::make_unique<engine_1d::Engine1DModel>(readParams(resources_dir), resources_dir);
+  const auto warnings = readResourceWarnings<engine::EngineWarnings>(resources_dir + "/engine_1d.yaml", std::string(model->name()));
+  return std::make_unique<EngineFmu>(std::move(model), warnings);
 }
 
 }  // namespace hbt::fmi::exported

@@ -5,6 +5,8 @@
 // PT1 and NOx map files are read from resources/ under their own file names; the warning thresholds
 // from its diagnostics: section.
 #include <memory>
+#include <string>
+#include <utility>
 
 #include "engine_map_fmu_variables.hpp"  // first: generated::VariablesModel, EngineFmu's base
 #include "engine/engine_fmu.hpp"
@@ -17,8 +19,9 @@ std::unique_ptr<ExportedModel> makeExportedModel(const std::string& resources_di
   auto p = readResourceParams<engine_map::MapEngineParams>(resources_dir + "/engine_map.yaml");
   for (std::string* file : {&p.full_load_file, &p.fuel_map_file, &p.pt1_file, &p.nox_map_file})
     if (!file->empty()) *file = resourceFile(resources_dir, *file);  // nox_map_file "": the constant index
-  const auto warnings = readResourceWarnings<engine::EngineWarnings>(resources_dir + "/engine_map.yaml", "map");
-  return std::make_unique<EngineFmu>(std::make_unique<engine_map::MapEngineModel>(p, resources_dir), warnings);
+  auto model = std::make_unique<engine_map::MapEngineModel>(p, resources_dir);
+  const auto warnings = readResourceWarnings<engine::EngineWarnings>(resources_dir + "/engine_map.yaml", std::string(model->name()));
+  return std::make_unique<EngineFmu>(std::move(model), warnings);
 }
 
 }  // namespace hbt::fmi::exported
