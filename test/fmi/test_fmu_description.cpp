@@ -8,7 +8,9 @@
 // - the GUID is deterministic and changes with the description;
 // - spec mistakes name the spec file and key (a field the message does not have, a parameter
 //   that is not scenario.<name>, a malformed topic, the step size given twice);
-// - an input of alternative producers <a>|<b>.<key> keeps its name (src/fmi/README.md).
+// - an input of alternative producers <a>|<b>.<key> keeps its name (src/fmi/README.md);
+// - a warning <participant>.warning.<name> (spec `warnings`) is a discrete Boolean output after the
+//   messages' fields, a member of the header's <participant>_warning group; another form is refused.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -92,6 +94,31 @@ TEST(FmuDescription, SpecMistakesNameFileAndKey) {
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("not a scenario.<name>"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FmuDescription, WarningsAreDiscreteBooleanOutputsNamedByTheConvention) {
+  const std::string warning = "warnings:\n  - {name: battery.warning.hot, description: too hot}\n";
+  const FmuDescription d = read(writeSpec("warning", kInputs, std::string(kParameter) + warning));
+  const ModelDescription md = ModelDescription::parse(d.modelDescriptionXml(), "battery.fmu");
+  ASSERT_EQ(md.variables().size(), 1u + 40u + 1u + 1u);
+  const ScalarVariable& w = md.variables()[41];  // after the input and BatteryState's 40 fields
+  EXPECT_EQ(w.name, "battery.warning.hot");
+  EXPECT_EQ(w.type, VarType::kBoolean);
+  EXPECT_EQ(w.causality, Causality::kOutput);
+  EXPECT_EQ(w.variability, Variability::kDiscrete);
+  EXPECT_EQ(w.description, "too hot");
+  EXPECT_NE(d.variablesHeader().find("  struct {\n    bool hot = false;\n  } battery_warning;"), std::string::npos)
+      << d.variablesHeader();
+  for (const char* bad : {"battery.hot", "battery.warning.too.hot", "warning.hot", "battery.warning."}) {
+    const std::string spec = writeSpec("bad_warning", kInputs, std::string(kParameter) + "warnings:\n  - {name: \"" + bad +
+                                                                "\", description: x}\n");
+    try {
+      read(spec);
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("warnings/") + bad), std::string::npos) << e.what();
+    }
   }
 }
 
