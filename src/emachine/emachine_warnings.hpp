@@ -13,6 +13,10 @@ struct EMachineWarnings {
   double derating_factor_below = 1.0;  ///< live/peak torque limit below this [-] (1.0 = any derating)
   double duration_s = 0.0;             ///< for this long [s]
 
+  /// The warning's condition (the node's and the FMU's): the live/peak torque limit
+  /// (EMachineOutputs::limits.derating_factor) below derating_factor_below.
+  bool derating(double derating_factor) const { return derating_factor < derating_factor_below; }
+
   void declare(ParamSet& ps) {
     ps.add("derating_factor_below", derating_factor_below, "-", 0.0, 1.0,
            "emachine_derating: live/peak torque limit below this");

@@ -29,7 +29,7 @@ void EMachineParticipant::configure() {
 
 void EMachineParticipant::checkWarnings(cosim::core::Nanos t) {
   const EMachineOutputs& o = model_->outputs();
-  if (derating_->update(t, o.limits.derating_factor < warnings_.derating_factor_below))
+  if (derating_->update(t, warnings_.derating(o.limits.derating_factor)))
     derating_->setMessage(cosim::core::formatText(
         "thermal derating: live torque limit %.3f of the peak (winding %.1f degC, magnet %.1f degC)",
         o.limits.derating_factor, units::kToCelsius(o.winding_T_K), units::kToCelsius(o.magnet_T_K)));
