@@ -3,17 +3,24 @@
 // - every output (all 40 fields of BatteryState, by value reference), at every step of a 30 s drive cycle of discharge, regeneration and current
 //   limits (0.01 s steps, cold pack at 0 degC), bit-identical to BatteryModel stepped directly
 //   (the FMU adds no arithmetic: same parameters from the same YAML, same table, same steps);
+// - battery.warning.battery_limited against the participant's rule written out here
+//   (BatteryOutputs::request_limited held without a break for diagnostics/duration_s of
+//   config/battery.yaml), step by step over the same cycle: raised by the assist beyond the cold
+//   pack's discharge limit, held through the regeneration beyond the charge limit, cleared by the
+//   cruise;
 // - the units it declares convert to the message fields' SI units (Ah -> A s, degC -> K);
 // - an FMU whose resources lack battery.yaml or the cell table refuses fmi2Instantiate, and its
 //   log names the missing file.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "battery/battery_io.hpp"
 #include "battery/battery_model.hpp"
+#include "battery/battery_warnings.hpp"
 #include "battery_fmu_variables.hpp"  // generated: the FMU's variables by value reference
 #include "common/units.hpp"
 #include "exported_fmu_test_util.hpp"
@@ -78,7 +85,7 @@ TEST(BatteryFmu, EveryOutputBitIdenticalToTheLibraryOverADriveCycle) {
   const auto residual = f.gettable("battery.state.energy_residual_j", VarType::kReal);
   EXPECT_EQ(f.getReal(soc), native.outputs().soc);  // initial state, before any step
   const std::vector<fmi::VariableRef> outputs = fmi::testing::outputRefs(f, *loaded);  // by name
-  ASSERT_EQ(outputs.size(), 40u);
+  ASSERT_EQ(outputs.size(), 41u);  // BatteryState's 40 fields and the warning (its own test)
   int limited_steps = 0;
   for (int k = 0; k < 3000; ++k) {
     const Drive d = drive(k);
@@ -104,6 +111,7 @@ TEST(BatteryFmu, EveryOutputBitIdenticalToTheLibraryOverADriveCycle) {
     NativeVariables nv;
     nv.write(o, d.dcdc_W);
     for (const auto& out : outputs) {
+      if (out.variable->name == "battery.warning.battery_limited") continue;
       const unsigned vr = out.variable->value_reference;
       if (out.variable->type == VarType::kBoolean)
         ASSERT_EQ(f.getBoolean(out), *nv.boolean(vr)) << out.variable->name << " step " << k;
@@ -117,12 +125,59 @@ TEST(BatteryFmu, EveryOutputBitIdenticalToTheLibraryOverADriveCycle) {
   EXPECT_TRUE(fmu.log.empty());
 }
 
+TEST(BatteryFmu, LimitedWarningFollowsTheParticipantsRuleStepByStep) {
+  auto loaded = fmi::testing::loadExported("battery", "warning");
+  Fmu fmu(loaded);
+  fmi::CsInstance& f = fmu.inst;
+  fmi::testing::initializeAtAmbient(f, 0.0);
+  const auto warning = f.gettable("battery.warning.battery_limited", VarType::kBoolean);
+  const auto P = f.settable("emachine.state.electrical_power_w", VarType::kReal);
+  const auto dcdc = f.settable("vehicle.state.dcdc_power_w", VarType::kReal);
+  const auto v = f.settable("vehicle.state.speed_m_s", VarType::kReal);
+  const auto thresholds = fmi::exported::readResourceWarnings<BatteryWarnings>("config/battery.yaml");
+  BatteryModel native = nativeModel();
+  native.reset(units::celsiusToK(0.0));
+  // the rule by hand: raised at the first state time where the condition has held since its onset
+  // for duration_s, cleared at the first one without it
+  double onset_s = -1.0, first_raise_s = -1.0, last_raised_s = -1.0;
+  int raises = 0;
+  bool was_raised = false;
+  for (int k = 0; k <= 3000; ++k) {
+    const double t = 0.01 * k;
+    if (k > 0) {
+      const Drive d = drive(k - 1);
+      f.setReal(P, d.emachine_W);
+      f.setReal(dcdc, d.dcdc_W);
+      f.setReal(v, d.speed_m_s);
+      f.doStep(0.01);
+      native.step(0.01, BatteryInputs{d.emachine_W + d.dcdc_W, units::celsiusToK(0.0), d.speed_m_s});
+    }
+    const bool cond = native.outputs().request_limited;
+    onset_s = cond ? (onset_s < 0.0 ? t : onset_s) : -1.0;
+    const bool expected = cond && t - onset_s >= thresholds.duration_s - 1e-9;
+    if (expected && first_raise_s < 0.0) first_raise_s = t;
+    if (expected) last_raised_s = t;
+    raises += expected && !was_raised ? 1 : 0;
+    was_raised = expected;
+    ASSERT_EQ(f.getBoolean(warning), expected) << "t = " << t << " s";
+  }
+  std::printf("battery_limited raised %d times, first %.2f s, last %.2f s\n", raises, first_raise_s, last_raised_s);
+  EXPECT_EQ(raises, 1);
+  EXPECT_LT(first_raise_s, 1.0) << "raised by the assist beyond the cold pack's discharge limit";
+  EXPECT_GE(last_raised_s, 19.9) << "held through the regeneration beyond the charge limit";
+  EXPECT_LT(last_raised_s, 20.5) << "cleared by the cruise from 20 s";
+  EXPECT_FALSE(f.getBoolean(warning));
+}
+
 TEST(BatteryFmu, EveryOutputOfTheMessageIsAnOutputWithTheFieldsUnit) {
   auto loaded = fmi::testing::loadExported("battery", "units");
   const fmi::ModelDescription& md = loaded->modelDescription();
   int outputs = 0;
   for (const auto& var : md.variables()) outputs += var.causality == fmi::Causality::kOutput ? 1 : 0;
-  EXPECT_EQ(outputs, 40);  // BatteryState's fields (msg/BatteryState.msg), the header excepted
+  EXPECT_EQ(outputs, 40 + 1);  // BatteryState's fields (msg/BatteryState.msg, the header excepted), the warning
+  const fmi::ScalarVariable& w = md.variable("battery.warning.battery_limited");
+  EXPECT_EQ(w.type, VarType::kBoolean);
+  EXPECT_EQ(w.variability, fmi::Variability::kDiscrete);
   const fmi::SiUnit ampere_second = fmi::unitOfName("charge_throughput_ah").si;  // A.s
   const fmi::UnitConversion ah = md.unitToSi(md.variable("battery.state.charge_throughput_ah"), ampere_second);
   EXPECT_DOUBLE_EQ(ah.toSi(1.0), 3600.0);
