@@ -6,17 +6,24 @@
 //   EMachineModel stepped directly, with the cooling inputs fed, and without them (no cooling
 //   participant: the node takes the ambient air for coolant and engine, the FMU its inputs' start
 //   at the ambient);
+// - emachine.warning.emachine_derating against the participant's rule written out here
+//   (EMachineWarnings::derating of the live/peak torque limit held without a break for
+//   diagnostics/duration_s of config/emachine.yaml), step by step: the generating peak with hot
+//   coolant heats the winding into the derating range (raised), then no torque lets it cool below
+//   the derating start (cleared);
 // - an FMU whose resources lack emachine.yaml or the .vemp refuses fmi2Instantiate, its log naming
 //   the missing file.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "common/units.hpp"
 #include "emachine/emachine_io.hpp"
 #include "emachine/emachine_model.hpp"
+#include "emachine/emachine_warnings.hpp"
 #include "emachine_fmu_variables.hpp"  // generated: the FMU's variables by value reference
 #include "exported_fmu_test_util.hpp"
 #include "fmi/cs_instance.hpp"
@@ -64,7 +71,7 @@ void runAgainstLibrary(bool with_cooling) {
   fmi::testing::initializeAtAmbient(f, ambient_c);
   EMachineModel native = nativeModel();
   native.reset(ambient_K);
-  const std::vector<fmi::VariableRef> outputs = fmi::testing::outputRefs(f, *loaded);  // by name
+  const std::vector<fmi::VariableRef> outputs = fmi::testing::outputRefs(f, *loaded, VarType::kReal);  // by name
   const auto T = f.settable("ems.command.em_torque_request_nm", VarType::kReal);
   const auto w = f.settable("ems.command.engine_speed_rad_s", VarType::kReal);
   const auto V = f.settable("battery.state.terminal_voltage_v", VarType::kReal);
@@ -90,6 +97,7 @@ void runAgainstLibrary(bool with_cooling) {
     min_torque_Nm = std::min(min_torque_Nm, native.outputs().torque_Nm);
   }
   EXPECT_EQ(outputs.size(), 44u);  // EMachineState's fields (msg/EMachineState.msg), the header excepted
+  EXPECT_EQ(loaded->modelDescription().variable("emachine.warning.emachine_derating").type, VarType::kBoolean);
   EXPECT_GT(min_torque_Nm, -600.0) << "the generating request should be clamped by the envelope";
   EXPECT_EQ(f.getReal(torque), native.outputs().torque_Nm);
   EXPECT_TRUE(log.empty());
@@ -97,6 +105,73 @@ void runAgainstLibrary(bool with_cooling) {
 
 TEST(EMachineFmu, EveryOutputBitIdenticalToTheLibraryWithCoolingInputs) { runAgainstLibrary(true); }
 TEST(EMachineFmu, EveryOutputBitIdenticalToTheLibraryWithoutCoolingAtAmbient) { runAgainstLibrary(false); }
+
+// At t [s]: a generating request beyond the envelope at 700 rpm crank (1400 rpm EM: the generating
+// peak, 30 kW, is twice the continuous power, so the peak heats the winding past the 140 degC
+// derating start) with the coolant and engine at 95 degC until kHeat_s, then no torque; 48 V; the
+// machine starts at 60 degC (the hottest ambient the scenario accepts).
+constexpr double kHeat_s = 150.0, kEnd_s = 300.0;
+Inputs heatThenCool(double t) {
+  Inputs in{};
+  in.cmd.em_torque_request_nm = t < kHeat_s ? -1000.0 : 0.0;  // beyond the peak: the limit applies
+  in.cmd.engine_speed_rad_s = units::rpmToRadps(700.0);
+  in.battery.terminal_voltage_v = 48.0;
+  in.cooling.coolant_lt_temperature_k = in.cooling.metal_temperature_k = units::celsiusToK(95.0);
+  return in;
+}
+
+TEST(EMachineFmu, DeratingWarningFollowsTheParticipantsRuleStepByStep) {
+  auto loaded = fmi::testing::loadExported("emachine", "warning");
+  fmi::CsInstance f(loaded, "emachine", [](const std::string&, fmi2Status, const std::string&, const std::string&) {});
+  const double ambient_c = 60.0, ambient_K = units::celsiusToK(ambient_c);
+  f.setupExperiment(1e-6, 0.0, kEnd_s);
+  f.setReal(f.settable("scenario.ambient_temperature_c", VarType::kReal), ambient_c);
+  f.enterInitializationMode();
+  f.exitInitializationMode();
+  const auto warning = f.gettable("emachine.warning.emachine_derating", VarType::kBoolean);
+  const auto T = f.settable("ems.command.em_torque_request_nm", VarType::kReal);
+  const auto w = f.settable("ems.command.engine_speed_rad_s", VarType::kReal);
+  const auto V = f.settable("battery.state.terminal_voltage_v", VarType::kReal);
+  const auto Tc = f.settable("cooling.state.coolant_lt_temperature_k", VarType::kReal);
+  const auto Te = f.settable("cooling.state.metal_temperature_k", VarType::kReal);
+  const auto thresholds = fmi::exported::readResourceWarnings<EMachineWarnings>("config/emachine.yaml");
+  EMachineModel native = nativeModel();
+  native.reset(ambient_K);
+  // the rule by hand: raised at the first state time where the live/peak limit has been below the
+  // threshold since the onset for duration_s, cleared at the first one without it
+  double onset_s = -1.0, first_raise_s = -1.0, last_raised_s = -1.0;
+  int raises = 0;
+  bool was_raised = false;
+  const int steps = static_cast<int>(kEnd_s / 0.01);
+  for (int k = 0; k <= steps; ++k) {
+    const double t = 0.01 * k;
+    if (k > 0) {
+      const Inputs in = heatThenCool(0.01 * (k - 1));
+      f.setReal(T, in.cmd.em_torque_request_nm);
+      f.setReal(w, in.cmd.engine_speed_rad_s);
+      f.setReal(V, in.battery.terminal_voltage_v);
+      f.setReal(Tc, in.cooling.coolant_lt_temperature_k);
+      f.setReal(Te, in.cooling.metal_temperature_k);
+      f.doStep(0.01);
+      native.step(0.01, emachineInputs(in.cmd, in.battery, &in.cooling, ambient_K));
+    }
+    const bool cond = native.outputs().limits.derating_factor < thresholds.derating_factor_below;
+    onset_s = cond ? (onset_s < 0.0 ? t : onset_s) : -1.0;
+    const bool expected = cond && t - onset_s >= thresholds.duration_s - 1e-9;
+    if (expected && first_raise_s < 0.0) first_raise_s = t;
+    if (expected) last_raised_s = t;
+    raises += expected && !was_raised ? 1 : 0;
+    was_raised = expected;
+    ASSERT_EQ(f.getBoolean(warning), expected) << "t = " << t << " s";
+  }
+  std::printf("emachine_derating raised %d times, first %.2f s, last %.2f s\n", raises, first_raise_s, last_raised_s);
+  EXPECT_EQ(raises, 1);
+  EXPECT_GT(first_raise_s, 0.0) << "the peak torque should heat the machine into derating";
+  EXPECT_LT(first_raise_s, kHeat_s);
+  EXPECT_GT(last_raised_s, kHeat_s) << "the hot winding derates past the end of the torque";
+  EXPECT_LT(last_raised_s, kEnd_s - 1.0) << "cleared as the winding cools";
+  EXPECT_FALSE(f.getBoolean(warning));
+}
 
 TEST(EMachineFmu, MissingYamlRefusesInstantiationNamingTheFile) { fmi::testing::expectInstantiationRefusedWithout("emachine", "emachine.yaml"); }
 TEST(EMachineFmu, MissingVempRefusesInstantiationNamingTheFile) { fmi::testing::expectInstantiationRefusedWithout("emachine", ".vemp"); }
