@@ -137,11 +137,7 @@ TEST(BatteryFmu, LimitedWarningFollowsTheParticipantsRuleStepByStep) {
   const auto thresholds = fmi::exported::readResourceWarnings<BatteryWarnings>("config/battery.yaml");
   BatteryModel native = nativeModel();
   native.reset(units::celsiusToK(0.0));
-  // the rule by hand: raised at the first state time where the condition has held since its onset
-  // for duration_s, cleared at the first one without it
-  double onset_s = -1.0, first_raise_s = -1.0, last_raised_s = -1.0;
-  int raises = 0;
-  bool was_raised = false;
+  fmi::testing::WarningOracle rule{thresholds.duration_s};
   for (int k = 0; k <= 3000; ++k) {
     const double t = 0.01 * k;
     if (k > 0) {
@@ -152,20 +148,14 @@ TEST(BatteryFmu, LimitedWarningFollowsTheParticipantsRuleStepByStep) {
       f.doStep(0.01);
       native.step(0.01, BatteryInputs{d.emachine_W + d.dcdc_W, units::celsiusToK(0.0), d.speed_m_s});
     }
-    const bool cond = native.outputs().request_limited;
-    onset_s = cond ? (onset_s < 0.0 ? t : onset_s) : -1.0;
-    const bool expected = cond && t - onset_s >= thresholds.duration_s - 1e-9;
-    if (expected && first_raise_s < 0.0) first_raise_s = t;
-    if (expected) last_raised_s = t;
-    raises += expected && !was_raised ? 1 : 0;
-    was_raised = expected;
+    const bool expected = rule.update(t, native.outputs().request_limited);
     ASSERT_EQ(f.getBoolean(warning), expected) << "t = " << t << " s";
   }
-  std::printf("battery_limited raised %d times, first %.2f s, last %.2f s\n", raises, first_raise_s, last_raised_s);
-  EXPECT_EQ(raises, 1);
-  EXPECT_LT(first_raise_s, 1.0) << "raised by the assist beyond the cold pack's discharge limit";
-  EXPECT_GE(last_raised_s, 19.9) << "held through the regeneration beyond the charge limit";
-  EXPECT_LT(last_raised_s, 20.5) << "cleared by the cruise from 20 s";
+  std::printf("battery_limited raised %d times, first %.2f s, last %.2f s\n", rule.raises, rule.first_raise_s, rule.last_raised_s);
+  EXPECT_EQ(rule.raises, 1);
+  EXPECT_LT(rule.first_raise_s, 1.0) << "raised by the assist beyond the cold pack's discharge limit";
+  EXPECT_GE(rule.last_raised_s, 19.9) << "held through the regeneration beyond the charge limit";
+  EXPECT_LT(rule.last_raised_s, 20.5) << "cleared by the cruise from 20 s";
   EXPECT_FALSE(f.getBoolean(warning));
 }
 

@@ -137,11 +137,7 @@ TEST(EMachineFmu, DeratingWarningFollowsTheParticipantsRuleStepByStep) {
   const auto thresholds = fmi::exported::readResourceWarnings<EMachineWarnings>("config/emachine.yaml");
   EMachineModel native = nativeModel();
   native.reset(ambient_K);
-  // the rule by hand: raised at the first state time where the live/peak limit has been below the
-  // threshold since the onset for duration_s, cleared at the first one without it
-  double onset_s = -1.0, first_raise_s = -1.0, last_raised_s = -1.0;
-  int raises = 0;
-  bool was_raised = false;
+  fmi::testing::WarningOracle rule{thresholds.duration_s};
   const int steps = static_cast<int>(kEnd_s / 0.01);
   for (int k = 0; k <= steps; ++k) {
     const double t = 0.01 * k;
@@ -155,21 +151,15 @@ TEST(EMachineFmu, DeratingWarningFollowsTheParticipantsRuleStepByStep) {
       f.doStep(0.01);
       native.step(0.01, emachineInputs(in.cmd, in.battery, &in.cooling, ambient_K));
     }
-    const bool cond = native.outputs().limits.derating_factor < thresholds.derating_factor_below;
-    onset_s = cond ? (onset_s < 0.0 ? t : onset_s) : -1.0;
-    const bool expected = cond && t - onset_s >= thresholds.duration_s - 1e-9;
-    if (expected && first_raise_s < 0.0) first_raise_s = t;
-    if (expected) last_raised_s = t;
-    raises += expected && !was_raised ? 1 : 0;
-    was_raised = expected;
+    const bool expected = rule.update(t, native.outputs().limits.derating_factor < thresholds.derating_factor_below);
     ASSERT_EQ(f.getBoolean(warning), expected) << "t = " << t << " s";
   }
-  std::printf("emachine_derating raised %d times, first %.2f s, last %.2f s\n", raises, first_raise_s, last_raised_s);
-  EXPECT_EQ(raises, 1);
-  EXPECT_GT(first_raise_s, 0.0) << "the peak torque should heat the machine into derating";
-  EXPECT_LT(first_raise_s, kHeat_s);
-  EXPECT_GT(last_raised_s, kHeat_s) << "the hot winding derates past the end of the torque";
-  EXPECT_LT(last_raised_s, kEnd_s - 1.0) << "cleared as the winding cools";
+  std::printf("emachine_derating raised %d times, first %.2f s, last %.2f s\n", rule.raises, rule.first_raise_s, rule.last_raised_s);
+  EXPECT_EQ(rule.raises, 1);
+  EXPECT_GT(rule.first_raise_s, 0.0) << "the peak torque should heat the machine into derating";
+  EXPECT_LT(rule.first_raise_s, kHeat_s);
+  EXPECT_GT(rule.last_raised_s, kHeat_s) << "the hot winding derates past the end of the torque";
+  EXPECT_LT(rule.last_raised_s, kEnd_s - 1.0) << "cleared as the winding cools";
   EXPECT_FALSE(f.getBoolean(warning));
 }
 

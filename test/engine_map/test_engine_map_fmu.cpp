@@ -120,9 +120,7 @@ TEST(EngineMapFmu, BoostLimitedWarningFollowsTheParticipantsRuleStepByStep) {
   MapEngineModel native = nativeModel();
   native.reset(units::celsiusToK(5.0));
   const EngineFmuInputs in(f);
-  // the rule by hand: raised at the first step where the condition has held since onset for duration_s
-  double onset_s = -1.0, first_raise_s = -1.0;
-  int raised_steps = 0;
+  fmi::testing::WarningOracle rule{thresholds.duration_s};
   const int steps = static_cast<int>(10.0 / kStep_s);
   for (int k = 0; k <= steps; ++k) {
     const double t = k * kStep_s;
@@ -132,15 +130,11 @@ TEST(EngineMapFmu, BoostLimitedWarningFollowsTheParticipantsRuleStepByStep) {
       f.doStep(kStep_s);
       native.step(kStep_s, engine::testing::nativeInputs(d, units::celsiusToK(5.0)));
     }
-    const bool cond = native.boostLimited(thresholds.margin_nm);
-    onset_s = cond ? (onset_s < 0.0 ? t : onset_s) : -1.0;
-    const bool expected = cond && t - onset_s >= thresholds.duration_s - 1e-9;
-    if (expected && first_raise_s < 0.0) first_raise_s = t;
-    raised_steps += expected ? 1 : 0;
+    const bool expected = rule.update(t, native.boostLimited(thresholds.margin_nm));
     ASSERT_EQ(f.getBoolean(warning), expected) << "t = " << t << " s";
   }
-  EXPECT_GT(first_raise_s, 1.0 + thresholds.duration_s - 1e-9) << "raised after the tip-in at 1 s plus the persistence";
-  EXPECT_GT(raised_steps, 10) << "the drive should hold the warning for a while";
+  EXPECT_GT(rule.first_raise_s, 1.0 + thresholds.duration_s - 1e-9) << "raised after the tip-in at 1 s plus the persistence";
+  EXPECT_GT(rule.raised_states, 10) << "the drive should hold the warning for a while";
   EXPECT_FALSE(f.getBoolean(warning)) << "cleared once the PT1 limit caught up and the request was released";
 }
 

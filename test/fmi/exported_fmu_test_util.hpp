@@ -18,6 +18,32 @@
 
 namespace hbt::fmi::testing {
 
+/// A participant's warning rule written out by hand, independently of cosim::core::Warning (the
+/// code under test): raised at the first state time where the condition has held since its onset
+/// for duration_s, cleared at the first one without it. Counts the raises and keeps the first and
+/// last raised times.
+struct WarningOracle {
+  double duration_s;           ///< persistence [s]
+  double onset_s = -1.0;       ///< start of the condition's current run [s]; -1: not holding
+  double first_raise_s = -1.0; ///< [s]; -1: never raised
+  double last_raised_s = -1.0; ///< [s]; -1: never raised
+  int raises = 0;
+  int raised_states = 0;
+  bool raised = false;
+
+  /// The expected warning state at t_s with the condition `holds`.
+  bool update(double t_s, bool holds) {
+    onset_s = holds ? (onset_s < 0.0 ? t_s : onset_s) : -1.0;
+    const bool now = holds && t_s - onset_s >= duration_s - 1e-9;
+    if (now && first_raise_s < 0.0) first_raise_s = t_s;
+    if (now) last_raised_s = t_s;
+    raises += now && !raised ? 1 : 0;
+    raised_states += now ? 1 : 0;
+    raised = now;
+    return now;
+  }
+};
+
 /// The paths made in this process, removed after the last test.
 class ExportTestPaths : public ::testing::Environment {
  public:
