@@ -21,11 +21,10 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import threading
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from test_fmu_round_trip import flatten, fmu_dir, messages, read_json  # noqa: E402
+from test_fmu_round_trip import flatten, fmu_dir, messages, read_json, run_together  # noqa: E402
 
 from twin_tools.launch import run_util  # noqa: E402
 from twin_tools.paths import REPO  # noqa: E402
@@ -54,11 +53,7 @@ class EngineFmuRoundTrip(unittest.TestCase):
             cls.rc[(scenario, variant)] = (r.returncode, r.stdout[-2000:] + r.stderr[-2000:])
 
         for scenario in sorted(RUNS):  # native and FMU of one scenario at once
-            threads = [threading.Thread(target=run, args=(scenario, v)) for v in ("native", "fmu")]
-            for t in threads:
-                t.start()
-            for t in threads:
-                t.join()
+            run_together(run, [(scenario, v) for v in ("native", "fmu")])
 
     @classmethod
     def tearDownClass(cls):

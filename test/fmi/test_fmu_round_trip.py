@@ -30,6 +30,15 @@ from twin_tools.paths import REPO
 UNTIL_S = 600.0
 
 
+def run_together(target, arg_tuples):
+    """target(*args) for every tuple of arg_tuples, each in its own thread, all at once; returns when all are done."""
+    threads = [threading.Thread(target=target, args=a) for a in arg_tuples]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+
+
 def fmu_dir():
     """<build>/fmus (src/fmi/export/CMakeLists.txt), next to the devel space in use."""
     for p in os.environ.get("CMAKE_PREFIX_PATH", "").split(":"):
@@ -85,11 +94,7 @@ class FmuRoundTrip(unittest.TestCase):
                                capture_output=True, text=True)
             cls.out[name], cls.rc[name] = out, (r.returncode, r.stdout[-2000:] + r.stderr[-2000:])
 
-        threads = [threading.Thread(target=run, args=(n, a)) for n, a in runs.items()]  # both at once
-        for t in threads:
-            t.start()
-        for t in threads:
-            t.join()
+        run_together(run, list(runs.items()))  # both at once
 
     @classmethod
     def tearDownClass(cls):
