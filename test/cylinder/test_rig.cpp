@@ -258,13 +258,12 @@ TEST(Rig, LowLambdaFullLoadFuelBurnsBeforeExhaustValveOpening) {
 }
 
 TEST(Rig, NoxBatchIntervalConverges) {
-  // The Zeldovich kinetics are integrated in batches of nox_interval_deg at the batch's mean
-  // burned-zone state. Against 0.5-deg batches (the converged reference), NO per cycle from
-  // 6-deg batches (the engine's setting) must agree within 2 % and from 12-deg batches within
-  // 8 % at mid and full load (measured: 6 deg -1.6 / -0.8 %, 12 deg -6.9 / -3.4 %; the rate is
-  // convex in T, so the mean temperature under-predicts. A rate-weighted batch temperature,
-  // T = -Θ/ln<exp(-Θ/T_b)> with Θ = 69 090 K (Heywood eq. 11.8), was tried: +0.9 / +1.2 % and
-  // +3.0 / +4.4 %, an over-correction of similar size, so it was not adopted).
+  // The NO forms in batches of nox_interval_deg: one hot-zone packet per batch of burned fuel at
+  // its fuel-weighted reactant state (shipped model). Against 0.5-deg batches (the converged
+  // reference), NO per cycle from 6-deg batches (the engine's setting) must agree within 2 % and
+  // from 12-deg batches within 8 % at mid and full load (measured, hot zone: 6 deg -0.14 / -0.15 %,
+  // 12 deg -0.53 / -0.52 %; the burned-zone model, Zeldovich at the batch's mean burned-zone
+  // state: 6 deg -1.6 / -0.8 %, 12 deg -6.9 / -3.4 %, as its rate is convex in T).
   struct Case { double fuel_kg, p_in_Pa, p_ex_Pa; };
   for (const Case& k : {Case{64e-6, 1.9e5, 1.75e5}, Case{125e-6, 2.7e5, 2.4e5}}) {
     auto no = [&](double interval_deg) {
