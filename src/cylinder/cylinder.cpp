@@ -13,7 +13,8 @@ Cylinder::Cylinder(const CylinderParams& params, const std::string& name)
     : P_(params),
       name_(name),
       thermo_(params.fuel, params.constant_cp, params.constant_cp_T_K),
-      crank_(params.geometry) {
+      crank_(params.geometry),
+      hot_zone_(thermo_) {
   if (P_.soi_main.empty()) P_.finalize();
   woschni_pre_ = P_.woschni.multiplier * P_.woschni.C0 * std::pow(P_.geometry.bore_m, -0.2);
   hohenberg_pre_ = P_.woschni.multiplier * P_.woschni.hohenberg_C;
@@ -48,6 +49,8 @@ void Cylinder::initialize(double theta_deg, double p, double T, double xb) {
   deferred_kg_ = 0.0;
   n_NO_ = n_N_ = 0.0;
   nox_t_ = nox_Tt_ = nox_pt_ = nox_Vt_ = nox_deg_ = 0.0;
+  hz_fuel_kg_ = hz_Tu_ = hz_p_ = 0.0;
+  hz_yair_ivc_ = 0.0;
   acc_ = CycleResults();
   load_ = fuel_demand_kg_ / P_.fuel_ref_kg;
   P_.walls.evaluate(T_coolant_K_, load_, Thead_, Tliner_, Tpiston_);
@@ -129,7 +132,7 @@ void Cylinder::substep(double dt, double omega, const PortFlows& f) {
   clampUnburnedMasses();
   solveZoneEnergies(s);
   accumulateCycleResults(s);
-  if (P_.nox_enabled && two_zone_) accumulateNox(s);
+  if (P_.nox_enabled && (two_zone_ || hz_fuel_kg_ > 0.0)) accumulateNox(s);
   advanceCrankAngle(s);
 }
 
@@ -232,6 +235,7 @@ void Cylinder::burnFuel(SubstepState& s) {
   const double dm_fb = std::max(0.0, std::min({demand, mu_[kFuelVap], mu_[kAir] / afr}));
   deferred_kg_ = demand - dm_fb;
   if (dm_fb > 0.0) {
+    hotZoneReactants(s, dm_fb);
     releaseCombustionHeat(s, dm_fb, afr);
     acc_.fuel_burned_kg += dm_fb;
     acc_.heat_release_J += P_.fuel.lhv_J_kg * dm_fb;
@@ -373,8 +377,23 @@ void Cylinder::accumulateCycleResults(const SubstepState& s) {
   if (two_zone_) acc_.Tmax_burned_K = std::max(acc_.Tmax_burned_K, Tb_);
 }
 
-// 7. NO kinetics in the burned zone, batched over nox_interval_deg.
+// Hot-zone reactants of the sub-step's burned fuel dm_fb [kg], weighted by dm_fb: the unburned
+// zone's temperature and the pressure at the step start (air fraction: the trapped charge's).
+void Cylinder::hotZoneReactants(const SubstepState& s, double dm_fb) {
+  if (!(P_.nox_enabled && P_.nox_hot_zone && closed_ && hz_yair_ivc_ > 0.0)) return;
+  hz_fuel_kg_ += dm_fb;
+  hz_Tu_ += Tu_ * dm_fb;
+  hz_p_ += s.p0 * dm_fb;
+}
+
+// 7. NO kinetics, batched over nox_interval_deg: hot zone (fuel burned in the batch) or
+// burned zone (Zeldovich at the batch's mean burned-zone state).
 void Cylinder::accumulateNox(const SubstepState& s) {
+  if (P_.nox_hot_zone) {
+    nox_deg_ += s.dth;
+    if (nox_deg_ >= P_.nox_interval_deg) hotZoneInterval();
+    return;
+  }
   if (Tb_ >= P_.nox_min_temperature_K) {
     nox_t_ += s.dt;
     nox_Tt_ += Tb_ * s.dt;

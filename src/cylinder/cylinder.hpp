@@ -36,6 +36,7 @@
 #include "cylinder/cylinder_params.hpp"
 #include "cylinder/equilibrium.hpp"
 #include "cylinder/flame_temperature.hpp"
+#include "cylinder/hot_zone_no.hpp"
 #include "cylinder/zeldovich.hpp"
 
 namespace hbt::cylinder {
@@ -171,6 +172,7 @@ class Cylinder {
   void solveZoneEnergies(SubstepState& s);
   void mergeConsumedUnburnedZone(SubstepState& s);
   void accumulateCycleResults(const SubstepState& s);
+  void hotZoneReactants(const SubstepState& s, double dm_fb);
   void accumulateNox(const SubstepState& s);
   void advanceCrankAngle(const SubstepState& s);
   void onIVC(double omega);
@@ -180,6 +182,7 @@ class Cylinder {
   void refreshPolys();  // zone polynomials, mass and m·R after any mass change
   void solveTemperatures(double V0, double V1, double Vu0, double Vb0, double Uu, double Ub);
   void noxInterval();
+  void hotZoneInterval();  // nox/model hot_zone: NO of the batch's burned fuel (hot_zone_no.hpp)
   /// Burned-zone state for the NO kinetics over the interval [T_f mean, p mean]: temperature
   /// (dissociated if nox/dissociation), equilibrium mole fractions, and the zone volume
   /// scaled to that state. Returns false if the burned zone is empty.
@@ -195,6 +198,7 @@ class Cylinder {
   Equilibrium equil_;      // burned-zone equilibrium at the frozen temperature (no dissociation)
   DissociatedFlame flame_;  // burned-zone equilibrium at the dissociated temperature
   ZeldovichNO nox_;
+  HotZoneNO hot_zone_;     // declared after thermo_, which it references
 
   double theta_deg_ = -360.0, V_ = 0, p_ = 1e5;
   double mu_[kNumGroups] = {}, mb_[kNumGroups] = {};
@@ -215,6 +219,9 @@ class Cylinder {
   double deferred_kg_ = 0, fuel_cycle_kg_ = 0, qwall_W_ = 0;
   // NOx: moles in the burned zone and interval accumulators
   double n_NO_ = 0, n_N_ = 0, nox_t_ = 0, nox_Tt_ = 0, nox_pt_ = 0, nox_Vt_ = 0, nox_deg_ = 0;
+  // hot zone: fuel burned in the batch [kg] and its fuel-weighted T_u [K kg], p [Pa kg];
+  // air mass fraction of the trapped charge (air + residual) at IVC [-]
+  double hz_fuel_kg_ = 0, hz_Tu_ = 0, hz_p_ = 0, hz_yair_ivc_ = 0;
   CycleResults acc_{}, last_{};
   int cycles_ = 0;
   double ca_marks_[3] = {0, 0, 0};

@@ -25,6 +25,13 @@ void Cylinder::onIVC(double omega) {
   acc_.trapped_mass_kg = mass_kg();
   acc_.trapped_air_kg = groupMass(kAir);
   acc_.residual_frac = burnedFraction();
+  // The flame entrains the charge as trapped (air + residual, uniformly mixed); the unburned
+  // zone's own air fraction falls during the burn because the two-zone bookkeeping takes only air
+  // into the burned zone, so the hot zone uses the trapped charge's air fraction.
+  {
+    const double gas = mu_[kAir] + mu_[kBurned];
+    hz_yair_ivc_ = gas > 0.0 ? mu_[kAir] / gas : 0.0;
+  }
   // (ω·30)/π, not units::radpsToRpm(ω) = ω/(π/30): a last-bit difference in the rpm of the
   // injection maps moves the 1D engine's NOx by ~1e-7 (relative) in a 20 s Urban run.
   const double rpm = omega * 30.0 / units::kPi;
@@ -52,6 +59,7 @@ void Cylinder::onIVC(double omega) {
   P_.walls.evaluate(T_coolant_K_, load_, Thead_, Tliner_, Tpiston_);
   n_NO_ = n_N_ = 0.0;
   nox_t_ = nox_Tt_ = nox_pt_ = nox_Vt_ = nox_deg_ = 0.0;
+  hz_fuel_kg_ = hz_Tu_ = hz_p_ = 0.0;
   ca_next_ = 0;
   ca_marks_[0] = ca_marks_[1] = ca_marks_[2] = 0.0;
 }
@@ -86,7 +94,24 @@ void Cylinder::ignite(Pulse& k, double theta_soc, double omega) {
   combustion_started_ = true;
 }
 
+// The batch's burned fuel at its fuel-weighted reactant state forms one hot-zone packet whose NO
+// is frozen into the cylinder's NO (hot_zone_no.hpp).
+void Cylinder::hotZoneInterval() {
+  nox_deg_ = 0.0;
+  if (!(hz_fuel_kg_ > 0.0)) return;
+  const double m = hz_fuel_kg_, T_u = hz_Tu_ / m, p = hz_p_ / m;
+  hz_fuel_kg_ = hz_Tu_ = hz_p_ = 0.0;
+  const double n = hot_zone_.noMoles(m, T_u, hz_yair_ivc_, p, P_.nox_hot_zone_residence_s,
+                                     P_.nox_min_temperature_K);
+  if (!(n >= 0.0) || !std::isfinite(n)) diverged("hot-zone NO (flame temperature)", T_u);
+  n_NO_ += n;
+}
+
 void Cylinder::noxInterval() {
+  if (P_.nox_hot_zone) {
+    hotZoneInterval();
+    return;
+  }
   if (nox_t_ <= 0.0) return;
   const double T_f = nox_Tt_ / nox_t_, p = nox_pt_ / nox_t_, Vb_f = nox_Vt_ / nox_t_;
   double T, Vb, x[kNumSpecies];
@@ -142,7 +167,7 @@ bool Cylinder::noxConditions(double T_f, double p, double Vb_f, double& T, doubl
 
 void Cylinder::mergeZones() {
   if (!two_zone_) return;
-  if (nox_t_ > 0.0) noxInterval();
+  if (nox_t_ > 0.0 || hz_fuel_kg_ > 0.0) noxInterval();
   const double U = Pu_.u(Tu_) + Pb_.u(Tb_);
   const double Tguess = (Pu_.R * Tu_ + Pb_.R * Tb_) / (Pu_.R + Pb_.R);
   for (int g = 0; g < kNumGroups; ++g) {
@@ -161,7 +186,7 @@ void Cylinder::mergeZones() {
 }
 
 void Cylinder::onEVO() {
-  if (nox_t_ > 0.0) noxInterval();
+  if (nox_t_ > 0.0 || hz_fuel_kg_ > 0.0) noxInterval();
   acc_.no_mass_kg = n_NO_ * kM_NO;
   acc_.nox_no2eq_kg = n_NO_ * kM_NO2;
   mergeZones();

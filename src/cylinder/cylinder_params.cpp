@@ -104,6 +104,9 @@ void CylinderParams::declare(ParamSet& ps) {
   ps.add("min_temperature_K", nox_min_temperature_K, "K", 1000.0, 2500.0, "NO frozen below");
   ps.add("dissociation", nox_dissociation,
          "NO kinetics at the equilibrium (dissociated) burned-zone temperature");
+  ps.add("model", nox_model, "hot_zone | burned_zone: where the NO forms");
+  ps.add("hot_zone_residence_s", nox_hot_zone_residence_s, "s", 0.0, 0.02,
+         "residence time in the stoichiometric hot zone (WHTC calibration constant)");
   ps.setPrefix("cylinder/numerics/");
   ps.add("max_substep_deg", max_substep_deg, "deg", 0.01, 5.0, "largest internal step");
   ps.setPrefix("");
@@ -132,6 +135,13 @@ void CylinderParams::finalize(const std::string& file) {
   else
     throw InputError(file, "cylinder/heat_transfer/correlation",
                      "'" + heat_transfer_correlation + "' is not one of woschni, hohenberg");
+  if (nox_model == "hot_zone")
+    nox_hot_zone = true;
+  else if (nox_model == "burned_zone")
+    nox_hot_zone = false;
+  else
+    throw InputError(file, "cylinder/nox/model",
+                     "'" + nox_model + "' is not one of hot_zone, burned_zone");
   if (!(ivc_deg < 0.0 && evo_deg > 0.0 && evo_deg - ivc_deg < 360.0))
     throw InputError(file, "cylinder/valve_events/ivc_deg", "need IVC < 0 < EVO within 360 deg");
 }

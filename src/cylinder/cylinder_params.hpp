@@ -51,6 +51,9 @@ struct CylinderParams {
   double nox_interval_deg = 5.0;
   double nox_min_temperature_K = 1700.0;
   bool nox_dissociation = true;  // NO kinetics at the dissociated burned-zone temperature
+  std::string nox_model = "hot_zone";       // hot_zone | burned_zone (hot_zone_no.hpp, README)
+  bool nox_hot_zone = true;                 // set by finalize() from nox_model
+  double nox_hot_zone_residence_s = 0.135e-3; // τ_hz: residence in the stoichiometric hot zone
   double max_substep_deg = 1.0;
 
   CylinderParams();                  // typical HD common-rail defaults (see README)

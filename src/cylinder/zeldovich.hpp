@@ -44,6 +44,8 @@ class ZeldovichNO {
   double quasiSteadyN(double c_NO) const;
   double equilibriumNO() const { return cNOe_; }  // mol/m³
   double k1f() const { return k1f_; }
+  double k2f() const { return k2f_; }
+  double k3f() const { return k3f_; }
   double conc(Species s) const { return c_[s]; }  // equilibrium concentration, mol/m³
   long stepsTaken() const { return steps_; }      // cumulative CVODE steps (cost diagnostics)
   /// Relative tolerance of CVODE (default 1e-4; absolute: 1e-12 / 1e-18 of the total concentration).

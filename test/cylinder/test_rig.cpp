@@ -139,6 +139,15 @@ TEST(Params, UnknownHeatTransferCorrelationNamesFileAndKey) {
                                  "cylinder/heat_transfer/correlation");
 }
 
+TEST(Params, UnknownNoxModelNamesFileAndKey) {
+  CylinderParams cp = test::loadParams();
+  cp.nox_model = "zeldovich";
+  hbt::testing::expectInputError([&] { cp.finalize("cyl.yaml"); }, "cyl.yaml", "cylinder/nox/model");
+  cp.nox_model = "burned_zone";
+  cp.finalize("cyl.yaml");
+  EXPECT_FALSE(cp.nox_hot_zone);
+}
+
 TEST(Rig, FlameConsumingTheWholeUnburnedZoneKeepsEnergyBalance) {
   // Limit case: a flame air excess (3.0) above the global one (full-load fuel, lambda ~1.7): the
   // burned zone takes nearly all the air of the unburned zone; energy must still be conserved
@@ -171,7 +180,9 @@ TEST(Rig, PhysicalTrends) {
   const CycleResults h = run(cp0, hot);
   EXPECT_LT(h.trapped_mass_kg, 0.95 * base.trapped_mass_kg);
   EXPECT_LT(h.lambda, base.lambda);
-  // Advanced injection: higher peak pressure and much more NO (hotter burned gas for longer).
+  // Advanced injection: higher peak pressure and more NO, the direction of the classic timing
+  // lever (Khair, DieselNet "Engine Design for NOx Control"): the fuel burns nearer TDC, with
+  // hotter, denser charge (hot-zone model: +14 % for these 4 deg; required: > +8 %).
   // From a fixed SOI of 5 deg bTDC to 9 deg bTDC (independent of the calibrated map, whose SOI
   // here is after TDC: there the peak pressure is the compression peak either way).
   CylinderParams early = cp0, adv = cp0;
@@ -182,7 +193,7 @@ TEST(Rig, PhysicalTrends) {
   const CycleResults b5 = run(early, rp);
   const CycleResults a = run(adv, rp);
   EXPECT_GT(a.pmax_Pa, b5.pmax_Pa + 5e5);
-  EXPECT_GT(a.nox_no2eq_kg, 1.2 * b5.nox_no2eq_kg);
+  EXPECT_GT(a.nox_no2eq_kg, 1.08 * b5.nox_no2eq_kg);
   // Halving the time step changes IMEP by < 0.3 % (converged integration).
   RigParams fine = rp;
   fine.step_deg = 0.05;
@@ -247,13 +258,12 @@ TEST(Rig, LowLambdaFullLoadFuelBurnsBeforeExhaustValveOpening) {
 }
 
 TEST(Rig, NoxBatchIntervalConverges) {
-  // The Zeldovich kinetics are integrated in batches of nox_interval_deg at the batch's mean
-  // burned-zone state. Against 0.5-deg batches (the converged reference), NO per cycle from
-  // 6-deg batches (the engine's setting) must agree within 2 % and from 12-deg batches within
-  // 8 % at mid and full load (measured: 6 deg -1.6 / -0.8 %, 12 deg -6.9 / -3.4 %; the rate is
-  // convex in T, so the mean temperature under-predicts. A rate-weighted batch temperature,
-  // T = -Θ/ln<exp(-Θ/T_b)> with Θ = 69 090 K (Heywood eq. 11.8), was tried: +0.9 / +1.2 % and
-  // +3.0 / +4.4 %, an over-correction of similar size, so it was not adopted).
+  // The NO forms in batches of nox_interval_deg: one hot-zone packet per batch of burned fuel at
+  // its fuel-weighted reactant state (shipped model). Against 0.5-deg batches (the converged
+  // reference), NO per cycle from 6-deg batches (the engine's setting) must agree within 2 % and
+  // from 12-deg batches within 8 % at mid and full load (measured, hot zone: 6 deg -0.14 / -0.15 %,
+  // 12 deg -0.53 / -0.52 %; the burned-zone model, Zeldovich at the batch's mean burned-zone
+  // state: 6 deg -1.6 / -0.8 %, 12 deg -6.9 / -3.4 %, as its rate is convex in T).
   struct Case { double fuel_kg, p_in_Pa, p_ex_Pa; };
   for (const Case& k : {Case{64e-6, 1.9e5, 1.75e5}, Case{125e-6, 2.7e5, 2.4e5}}) {
     auto no = [&](double interval_deg) {
@@ -286,6 +296,7 @@ TEST(Rig, NoxSensitivityToIntakeTemperature) {
   auto sensitivity = [](bool dissociation, double& nox_mid_kg) {
     RigParams rp;
     CylinderParams cp = test::loadParams(&rp);
+    cp.nox_hot_zone = false;  // the burned-zone model (the hot zone: test_hot_zone_no.cpp)
     cp.nox_dissociation = dissociation;
     auto nox = [&](double T_K) {
       RigParams r = rp;
