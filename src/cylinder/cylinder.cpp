@@ -14,7 +14,7 @@ Cylinder::Cylinder(const CylinderParams& params, const std::string& name)
       name_(name),
       thermo_(params.fuel, params.constant_cp, params.constant_cp_T_K),
       crank_(params.geometry),
-      hot_zone_(thermo_) {
+      hot_zone_(thermo_, params.nox_hot_zone_residence_s) {
   if (P_.soi_main.empty()) P_.finalize();
   woschni_pre_ = P_.woschni.multiplier * P_.woschni.C0 * std::pow(P_.geometry.bore_m, -0.2);
   hohenberg_pre_ = P_.woschni.multiplier * P_.woschni.hohenberg_C;

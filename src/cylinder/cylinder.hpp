@@ -36,7 +36,7 @@
 #include "cylinder/cylinder_params.hpp"
 #include "cylinder/equilibrium.hpp"
 #include "cylinder/flame_temperature.hpp"
-#include "cylinder/hot_zone_no.hpp"
+#include "cylinder/hot_zone_no_table.hpp"
 #include "cylinder/zeldovich.hpp"
 
 namespace hbt::cylinder {
@@ -198,7 +198,7 @@ class Cylinder {
   Equilibrium equil_;      // burned-zone equilibrium at the frozen temperature (no dissociation)
   DissociatedFlame flame_;  // burned-zone equilibrium at the dissociated temperature
   ZeldovichNO nox_;
-  HotZoneNO hot_zone_;     // declared after thermo_, which it references
+  HotZoneNOTable hot_zone_;  // declared after P_ and thermo_, which it reads
 
   double theta_deg_ = -360.0, V_ = 0, p_ = 1e5;
   double mu_[kNumGroups] = {}, mb_[kNumGroups] = {};

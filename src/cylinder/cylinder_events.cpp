@@ -101,8 +101,7 @@ void Cylinder::hotZoneInterval() {
   if (!(hz_fuel_kg_ > 0.0)) return;
   const double m = hz_fuel_kg_, T_u = hz_Tu_ / m, p = hz_p_ / m;
   hz_fuel_kg_ = hz_Tu_ = hz_p_ = 0.0;
-  const double n = hot_zone_.noMoles(m, T_u, hz_yair_ivc_, p, P_.nox_hot_zone_residence_s,
-                                     P_.nox_min_temperature_K);
+  const double n = hot_zone_.noMoles(m, T_u, hz_yair_ivc_, p, P_.nox_min_temperature_K);
   if (!(n >= 0.0) || !std::isfinite(n)) diverged("hot-zone NO (flame temperature)", T_u);
   n_NO_ += n;
 }

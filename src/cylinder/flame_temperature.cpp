@@ -51,9 +51,9 @@ bool DissociatedFlame::equilibriumAt(const std::array<double, 5>& b, double T, d
 
 // Stages: target enthalpy of the frozen zone; residual at T_f; one frozen-cp step; secant steps.
 // A temperature is accepted (with its equilibrium) once the next correction would move it by less
-// than kToleranceK, so the cold limit costs a single equilibrium solve.
+// than the tolerance (kToleranceK unless given), so the cold limit costs a single equilibrium solve.
 bool DissociatedFlame::solve(const std::array<double, 5>& b, const double Y[kNumSpecies],
-                             double T_f, double p, Result& out) {
+                             double T_f, double p, Result& out, double tol) {
   solves_ = 0;
   if (!(T_f > 0.0 && p > 0.0) || !std::isfinite(T_f + p)) return false;
   const double h_target = frozenEnthalpy_J_kg(Y, T_f);
@@ -61,14 +61,14 @@ bool DissociatedFlame::solve(const std::array<double, 5>& b, const double Y[kNum
   double T0 = T_f;
   double r0 = zoneEnthalpy_J_kg(out.n_mol_kg, out.x, T0) - h_target;
   double T1 = T0 - r0 / mixtureCp_J_kgK(out.n_mol_kg, out.x, T0);
-  if (std::fabs(T1 - T0) < kToleranceK) return true;  // no dissociation to speak of: T_eq = T_f
+  if (std::fabs(T1 - T0) < tol) return true;  // no dissociation to speak of: T_eq = T_f
   for (int it = 0; it < kMaxIterations; ++it) {
     if (!(T1 > 0.0) || !std::isfinite(T1)) return false;
     if (!equilibriumAt(b, T1, p, out)) return false;
     const double r1 = zoneEnthalpy_J_kg(out.n_mol_kg, out.x, T1) - h_target;
     if (r1 == r0) return true;  // residual at round-off level
     const double T2 = T1 - r1 * (T1 - T0) / (r1 - r0);
-    if (std::fabs(T2 - T1) < kToleranceK) return true;
+    if (std::fabs(T2 - T1) < tol) return true;
     T0 = T1;
     r0 = r1;
     T1 = T2;

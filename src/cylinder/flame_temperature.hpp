@@ -49,8 +49,9 @@ class DissociatedFlame {
   /// b: element moles per kg (C, H, O, N, Ar) of the zone; Y_frozen: its frozen mass fractions
   /// (same elements); T_frozen_K: its frozen temperature; p_Pa: pressure. Returns false if an
   /// equilibrium solve or the temperature iteration fails (out is then not valid).
+  /// tolerance_K: the temperature is accepted once the next correction is below it.
   bool solve(const std::array<double, 5>& b, const double Y_frozen[kNumSpecies],
-             double T_frozen_K, double p_Pa, Result& out);
+             double T_frozen_K, double p_Pa, Result& out, double tolerance_K = kToleranceK);
   int lastEquilibriumSolves() const { return solves_; }
   void reset() { eq_.reset(); }
 

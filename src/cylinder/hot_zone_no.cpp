@@ -26,8 +26,7 @@ double HotZoneNO::frozenFlameTemperature_K(double T_u, double y_air) const {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-// Stages: frozen flame temperature; dissociated hot-zone state (stoichiometric products = the
-// BURNED group); Zeldovich from [NO] = 0 over τ; NO moles of the packet.
+// Stages: frozen flame temperature; the packet's NO per kg of hot-zone gas; its moles.
 double HotZoneNO::noMoles(double dm_fuel, double T_u, double y_air, double p, double tau,
                           double T_min, Packet* out) {
   Packet k;
@@ -38,21 +37,33 @@ double HotZoneNO::noMoles(double dm_fuel, double T_u, double y_air, double p, do
     if (out) *out = k;
     return 0.0;
   }
+  const double g = specificNO_mol_kg(k.T_frozen_K, p, tau, &k);
+  if (g < 0.0) return -1.0;
+  k.products_kg_kg = productsPerFuel(y_air);
+  if (out) *out = k;
+  return g * k.products_kg_kg * dm_fuel;
+}
+
+// Stages: dissociated hot-zone state (stoichiometric products = the BURNED group); Zeldovich
+// from [NO] = 0 over τ; NO per kg of the packet's gas.
+double HotZoneNO::specificNO_mol_kg(double T_frozen, double p, double tau, Packet* out,
+                                    double tol) {
   double Y[kNumSpecies];
   for (int s = 0; s < kNumSpecies; ++s) Y[s] = th_.massFraction(kBurned, Species(s));
   DissociatedFlame::Result r;
-  if (!flame_.solve(th_.elements(kBurned), Y, k.T_frozen_K, p, r)) {
+  if (!flame_.solve(th_.elements(kBurned), Y, T_frozen, p, r, tol)) {
     flame_.reset();
-    if (!flame_.solve(th_.elements(kBurned), Y, k.T_frozen_K, p, r)) return -1.0;
+    if (!flame_.solve(th_.elements(kBurned), Y, T_frozen, p, r, tol)) return -1.0;
   }
+  Packet k;
+  if (out) k = *out;
   k.T_K = r.T_K;
-  k.products_kg_kg = 1.0 + th_.afrStoich() / y_air;
   k.volume_m3_kg = r.n_mol_kg * kRu * r.T_K / p;
   zeldovich_.setConditions(r.T_K, p, r.x);
   k.no_eq_mol_m3 = zeldovich_.equilibriumNO();
   k.no_mol_m3 = tau > 0.0 ? k.no_eq_mol_m3 * alphaAt(tau) : 0.0;
   if (out) *out = k;
-  return k.no_mol_m3 * k.volume_m3_kg * k.products_kg_kg * dm_fuel;
+  return k.no_mol_m3 * k.volume_m3_kg;
 }
 
 // α = [NO]/[NO]_e after t at the current conditions: one-way equilibrium rates

@@ -63,6 +63,20 @@ class HotZoneNO {
   /// cylinder's nox/min_temperature_K) form no NO.
   double noMoles(double dm_fuel_kg, double T_u_K, double y_air, double p_Pa, double tau_s,
                  double T_min_K, Packet* out = nullptr);
+  /// Hot-zone kg of gas per kg of fuel burned with unburned gas of air mass fraction y_air:
+  /// m_p = 1 + AFR_st / y_air [-].
+  double productsPerFuel(double y_air) const { return 1.0 + th_.afrStoich() / y_air; }
+  /// NO [mol] per kg of hot-zone gas, [NO](tau) v_p, of a packet of frozen flame temperature
+  /// T_frozen_K at p_Pa after the residence time tau_s: a function of (T_frozen_K, p_Pa, tau_s)
+  /// alone, since the hot zone is always the stoichiometric products (the BURNED group). Fills
+  /// out (all but T_frozen_K, products_kg_kg) if given. Negative if the dissociated flame
+  /// temperature (equilibrium) fails. tolerance_K: of the dissociated temperature
+  /// (DissociatedFlame::solve).
+  double specificNO_mol_kg(double T_frozen_K, double p_Pa, double tau_s, Packet* out = nullptr,
+                           double tolerance_K = DissociatedFlame::kToleranceK);
+  /// Forget the equilibrium warm start: the next packet starts from complete combustion, so
+  /// its result does not depend on the packets before it.
+  void coldStart() { flame_.reset(); }
   /// The Zeldovich rates and equilibrium concentrations at the last packet's conditions (tests).
   const ZeldovichNO& zeldovich() const { return zeldovich_; }
 

@@ -8,18 +8,18 @@
 
 namespace hbt::engine_1d {
 
-/// Outflow face with demand(p0_face, T0_face) [kg/s]; `guess` = outflow velocity of the last call.
+/// Outflow face with demand(p0_face, T0_face) [kg/s]; ws = the last call's root and slope.
 template <class Demand>
 gasdyn::FaceState warmOutflowFace(const PerfectGas& gas, const gasdyn::EndState& s,
-                                  Demand demand, double& guess) {
-  return gasdyn::warmDemandOutflowFace(gas, s, demand, guess);
+                                  Demand demand, gasdyn::WarmStart& ws) {
+  return gasdyn::warmDemandOutflowFace(gas, s, demand, ws);
 }
 
-/// Inflow face with demand(p_b) -> Supply{mdot, T0}; `guess` = face velocity of the last call.
+/// Inflow face with demand(p_b) -> Supply{mdot, T0}; ws = the last call's root and slope.
 template <class Demand>
 gasdyn::FaceState warmInflowFace(const PerfectGas& gas, const gasdyn::EndState& s,
-                                 Demand demand, double& guess) {
-  return gasdyn::warmDemandInflowFace(gas, s, demand, guess);
+                                 Demand demand, gasdyn::WarmStart& ws) {
+  return gasdyn::warmDemandInflowFace(gas, s, demand, ws);
 }
 
 }  // namespace hbt::engine_1d

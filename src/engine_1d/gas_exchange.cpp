@@ -85,7 +85,7 @@ void CylinderValve::computeFluxes(double t) {
   FaceState f;
   if (a_in <= 0.0 && a_out <= 0.0) {
     f = closedFace(g, s);
-    guess_in_ = guess_out_ = 0.0;
+    warm_in_ = warm_out_ = gasdyn::WarmStart{};
   } else {
     const double pb0 = closedFacePressure(g, s);
     // Nozzle t = (p_down/p0_up)^((gamma-1)/gamma) without a power per iteration (isentropes):
@@ -96,14 +96,14 @@ void CylinderValve::computeFluxes(double t) {
       const double tp = pow_k(s.p / pv);
       f = warmInflowFace(g, s, [&](double pb, double b) {
         return Supply{nozzleMassFlowT(g, a_in, pv, Tv, pb, tp * b * b), Tv};
-      }, guess_in_);
-      guess_out_ = 0.0;
+      }, warm_in_);
+      warm_out_ = WarmStart{};
     } else if (pv < pb0 && a_out > 0.0) {
       const double tv = pow_k(pv / s.p), T = s.p / (s.rho * g.R);
       f = warmOutflowFace(g, s, [&](double p0, double T0) {
         return nozzleMassFlowT(g, a_out, p0, T0, pv, tv * T / T0);
-      }, guess_out_);
-      guess_in_ = 0.0;
+      }, warm_out_);
+      warm_in_ = WarmStart{};
     } else {
       f = closedFace(g, s);
     }
@@ -128,12 +128,13 @@ void ChargeAirCoolerLink::computeFluxes(double) {
   const PipeEnd& dn = forward ? b_ : a_;
   const EndState su = forward ? sa : sb, sd = forward ? sb : sa;
   const double pd = sd.p;
-  if (forward != (guess_ >= 0.0)) guess_ = guess_down_ = 0.0;  // direction change: cold start
-  double gw = std::fabs(guess_);
+  if (forward != warm_forward_) {  // direction change: cold start
+    warm_up_ = warm_down_ = WarmStart{};
+    warm_forward_ = forward;
+  }
   FaceState fu = warmOutflowFace(g, su, [&](double p0, double T0) {
     return ic_.massFlowForDrop(p0 - pd, T0, p0);
-  }, gw);
-  guess_ = forward ? gw : -gw;
+  }, warm_up_);
   double mdot = -fu.mdot_in(su.A);
   heat_W_ = 0.0;
   if (!(mdot > 0.0)) {
@@ -145,7 +146,7 @@ void ChargeAirCoolerLink::computeFluxes(double) {
   double p0u, T0u;
   stagnation(g, fu, p0u, T0u);
   double T0d = ic_.outletTemperature(T0u, T_cool_, mdot);
-  FaceState fd = warmInflowMassFlowFace(g, sd, mdot, T0d, guess_down_);
+  FaceState fd = warmInflowMassFlowFace(g, sd, mdot, T0d, warm_down_);
   const double md = fd.mdot_in(sd.A);
   if (md < mdot) {  // downstream face choked
     mdot = md;

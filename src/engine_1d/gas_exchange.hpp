@@ -27,6 +27,7 @@
 #include "engine_1d/engine_1d_params.hpp"
 #include "gasdyn/area_provider.hpp"
 #include "gasdyn/boundary.hpp"
+#include "gasdyn/characteristics.hpp"
 #include "gasdyn/volume.hpp"
 #include "turbo/intercooler.hpp"
 
@@ -73,7 +74,8 @@ class CylinderValve final : public gasdyn::Boundary {
   gasdyn::Volume& vol_;
   gasdyn::PipeEnd end_;
   std::shared_ptr<const CrankValveArea> area_;
-  double mdot_ = 0.0, guess_in_ = 0.0, guess_out_ = 0.0;
+  double mdot_ = 0.0;
+  gasdyn::WarmStart warm_in_, warm_out_;  // face solvers' warm starts: inflow, outflow
 };
 
 class ChargeAirCoolerLink final : public gasdyn::Boundary {
@@ -91,7 +93,8 @@ class ChargeAirCoolerLink final : public gasdyn::Boundary {
  private:
   gasdyn::PipeEnd a_, b_;
   const turbo::Intercooler& ic_;
-  double guess_ = 0.0, guess_down_ = 0.0;  // warm starts: upstream outflow, downstream inflow
+  gasdyn::WarmStart warm_up_, warm_down_;  // warm starts: upstream outflow, downstream inflow
+  bool warm_forward_ = true;               // direction of warm_up_'s flow (hot -> cold)
   double T_cool_ = 298.15, mdot_ = 0.0, heat_W_ = 0.0, heat_J_ = 0.0, T0_out_ = 298.15;
 };
 

@@ -25,8 +25,8 @@ void TurbineEntry::computeFluxes(double) {
   if (closedFacePressure(g, s) >= pout) {  // pipe -> turbine, flow from the face total state
     const FaceState f = warmDemandOutflowFace(g, s, [&](double p0, double T0) {
       return std::max(map_->massFlow(p0, T0, pout, speed_), 0.0);
-    }, guess_out_);
-    guess_in_ = 0.0;
+    }, warm_out_);
+    warm_in_ = WarmStart{};
     const EndFlux F = faceFlux(g, f.rho, f.u_in, f.p, s.A);
     end_.setFlux(F);
     mdot_ = -F.mdot_in;
@@ -42,8 +42,8 @@ void TurbineEntry::computeFluxes(double) {
     const double Tout = out_.T();
     const FaceState f = warmDemandInflowFace(g, s, [&](double pb) {
       return Supply{std::max(map_->massFlow(pout, Tout, pb, speed_), 0.0), Tout};
-    }, guess_in_);
-    guess_out_ = 0.0;
+    }, warm_in_);
+    warm_out_ = WarmStart{};
     mdot_ = -applyFace(f, end_, &out_);
   }
 }
@@ -68,7 +68,7 @@ void CompressorOutlet::computeFluxes(double) {
   const double pb0 = closedFacePressure(g, s);
   const double m0 = map_->massFlow(pin, Tin, pb0, speed_);
   if (m0 > 0.0) {  // delivery at the face static pressure
-    const FaceState f = warmDemandInflowFace(g, s, supply, guess_);
+    const FaceState f = warmDemandInflowFace(g, s, supply, warm_);
     const EndFlux F = faceFlux(g, f.rho, f.u_in, f.p, s.A);
     end_.setFlux(F);
     mdot_ = F.mdot_in;
@@ -78,7 +78,7 @@ void CompressorOutlet::computeFluxes(double) {
   } else {  // surge back flow: gas leaves the pipe into the inlet volume
     const FaceState f = massFlowFace(g, s, m0, 0.0);
     mdot_ = applyFace(f, end_, &in_);
-    guess_ = 0.0;
+    warm_ = WarmStart{};
   }
 }
 

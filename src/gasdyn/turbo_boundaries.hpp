@@ -17,6 +17,7 @@
 #include <memory>
 
 #include "gasdyn/boundary.hpp"
+#include "gasdyn/characteristics.hpp"
 #include "gasdyn/volume.hpp"
 
 namespace hbt::gasdyn {
@@ -55,7 +56,7 @@ class TurbineEntry final : public Boundary {
   Volume& out_;
   std::shared_ptr<const FlowMap> map_;
   double speed_ = 0.0, mdot_ = 0.0, power_ = 0.0, work_ = 0.0;
-  double guess_out_ = 0.0, guess_in_ = 0.0;  // warm start of the face solvers [m/s]
+  WarmStart warm_out_, warm_in_;  // warm starts of the face solvers
 };
 
 class CompressorOutlet final : public Boundary {
@@ -74,7 +75,7 @@ class CompressorOutlet final : public Boundary {
   PipeEnd end_;
   std::shared_ptr<const FlowMap> map_;
   double speed_ = 0.0, mdot_ = 0.0, power_ = 0.0, work_ = 0.0;
-  double guess_ = 0.0;  // warm start of the delivery face solver [m/s]
+  WarmStart warm_;  // warm start of the delivery face solver
 };
 
 }  // namespace hbt::gasdyn
