@@ -106,15 +106,7 @@ TEST(HotZoneNO, RigSensitivityToChargeAirTemperature) {
     RigParams rp;
     CylinderParams cp = test::loadParams(&rp);
     cp.nox_hot_zone = hot_zone;
-    auto nox = [&](double T_K) {
-      RigParams r = rp;
-      r.T_intake_K = T_K;
-      SingleCylinderRig rig(cp, r);
-      return rig.runToPeriodic(8, 2e-3).nox_no2eq_kg;
-    };
-    const double lo = nox(310.0), hi = nox(330.0);
-    nox_mid_kg = std::sqrt(lo * hi);
-    return std::log(hi / lo) / 20.0;  // 1/K
+    return test::rigNoxSensitivityToIntake(cp, rp, nox_mid_kg);
   };
   double nox_h = 0.0, nox_b = 0.0;
   const double s_h = sensitivity(true, nox_h), s_b = sensitivity(false, nox_b);

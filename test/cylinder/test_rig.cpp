@@ -182,7 +182,10 @@ TEST(Rig, PhysicalTrends) {
   EXPECT_LT(h.lambda, base.lambda);
   // Advanced injection: higher peak pressure and more NO, the direction of the classic timing
   // lever (Khair, DieselNet "Engine Design for NOx Control"): the fuel burns nearer TDC, with
-  // hotter, denser charge (hot-zone model: +14 % for these 4 deg; required: > +8 %).
+  // hotter, denser charge. Size: retarding a turbocharged DI diesel's injection from 20 to 18 and
+  // 16 deg bTDC cut its NOx by 11 % (Sakarya University repository, handle 20.500.12619/49693,
+  // Elsevier Masson 2007: an LHR engine against its standard build); the hot-zone model gives
+  // +14 % for these 4 deg, required: > +8 % (the published 11 % with a margin for the engine).
   // From a fixed SOI of 5 deg bTDC to 9 deg bTDC (independent of the calibrated map, whose SOI
   // here is after TDC: there the peak pressure is the compression peak either way).
   CylinderParams early = cp0, adv = cp0;
@@ -298,15 +301,7 @@ TEST(Rig, NoxSensitivityToIntakeTemperature) {
     CylinderParams cp = test::loadParams(&rp);
     cp.nox_hot_zone = false;  // the burned-zone model (the hot zone: test_hot_zone_no.cpp)
     cp.nox_dissociation = dissociation;
-    auto nox = [&](double T_K) {
-      RigParams r = rp;
-      r.T_intake_K = T_K;
-      SingleCylinderRig rig(cp, r);
-      return rig.runToPeriodic(8, 2e-3).nox_no2eq_kg;
-    };
-    const double lo = nox(310.0), hi = nox(330.0);
-    nox_mid_kg = std::sqrt(lo * hi);
-    return std::log(hi / lo) / 20.0;  // 1/K
+    return test::rigNoxSensitivityToIntake(cp, rp, nox_mid_kg);
   };
   double nox_d = 0.0, nox_f = 0.0;
   const double s_d = sensitivity(true, nox_d), s_f = sensitivity(false, nox_f);
