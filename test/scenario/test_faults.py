@@ -182,7 +182,10 @@ class Faults(unittest.TestCase):
         m = st["message"]
         if kind == "hang":  # named by the stepper on its own thread, the bag closed on the recorder's
             self.assertRegex(m, r"did not answer within %g s: node died or hung.*; in the stepper's process, %s has "
-                             r"been inside its model step \(from t = %.3f s\) for [0-9.]+ s$"
+                             r"been inside its model step \(from t = %.3f s\) for [0-9.]+ s"
+                             # the stepper may first have granted the silent ones more time as
+                             # starved of CPU (runs share the machine); the message then says so
+                             r"(; waited [0-9.]+ s more for [a-z, ]+ \(starved of CPU\))?$"
                              % (TIMEOUT_S, name, MODEL_FAULT_AT_S), case)
             self.assertLess(wall, 60.0, case)  # the manager that cannot shut down was ended
         else:
