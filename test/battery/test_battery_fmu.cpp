@@ -46,6 +46,20 @@ Drive drive(int k) {
   return {P, 1500.0 + 100.0 * std::cos(0.5 * t), 8.0 + 0.2 * t};
 }
 
+// The FMU's inputs, resolved by name once; set() writes one step's Drive.
+struct DriveInputs {
+  fmi::VariableRef P, dcdc, v;
+  explicit DriveInputs(const fmi::CsInstance& f)
+      : P(f.settable("emachine.state.electrical_power_w", VarType::kReal)),
+        dcdc(f.settable("vehicle.state.dcdc_power_w", VarType::kReal)),
+        v(f.settable("vehicle.state.speed_m_s", VarType::kReal)) {}
+  void set(fmi::CsInstance& f, const Drive& d) const {
+    f.setReal(P, d.emachine_W);
+    f.setReal(dcdc, d.dcdc_W);
+    f.setReal(v, d.speed_m_s);
+  }
+};
+
 // The library's outputs in the FMU's variables (BatteryState's fields by value reference)
 class NativeVariables : public fmi::exported::generated::VariablesModel {
  public:
@@ -72,9 +86,7 @@ TEST(BatteryFmu, EveryOutputBitIdenticalToTheLibraryOverADriveCycle) {
   BatteryModel native = nativeModel();
   const double air_T_K = units::celsiusToK(ambient_c);
   native.reset(air_T_K);
-  const auto P = f.settable("emachine.state.electrical_power_w", VarType::kReal);
-  const auto dcdc = f.settable("vehicle.state.dcdc_power_w", VarType::kReal);
-  const auto v = f.settable("vehicle.state.speed_m_s", VarType::kReal);
+  const DriveInputs inputs(f);
   const auto soc = f.gettable("battery.state.soc", VarType::kReal);
   const auto volt = f.gettable("battery.state.terminal_voltage_v", VarType::kReal);
   const auto cell_T = f.gettable("battery.state.cell_temperature_k", VarType::kReal);
@@ -89,9 +101,7 @@ TEST(BatteryFmu, EveryOutputBitIdenticalToTheLibraryOverADriveCycle) {
   int limited_steps = 0;
   for (int k = 0; k < 3000; ++k) {
     const Drive d = drive(k);
-    f.setReal(P, d.emachine_W);
-    f.setReal(dcdc, d.dcdc_W);
-    f.setReal(v, d.speed_m_s);
+    inputs.set(f, d);
     f.doStep(0.01);
     BatteryInputs in;
     in.power_request_W = d.emachine_W + d.dcdc_W;
@@ -131,9 +141,7 @@ TEST(BatteryFmu, LimitedWarningFollowsTheParticipantsRuleStepByStep) {
   fmi::CsInstance& f = fmu.inst;
   fmi::testing::initializeAtAmbient(f, 0.0);
   const auto warning = f.gettable("battery.warning.battery_limited", VarType::kBoolean);
-  const auto P = f.settable("emachine.state.electrical_power_w", VarType::kReal);
-  const auto dcdc = f.settable("vehicle.state.dcdc_power_w", VarType::kReal);
-  const auto v = f.settable("vehicle.state.speed_m_s", VarType::kReal);
+  const DriveInputs inputs(f);
   const auto thresholds = fmi::exported::readResourceWarnings<BatteryWarnings>("config/battery.yaml");
   BatteryModel native = nativeModel();
   native.reset(units::celsiusToK(0.0));
@@ -142,9 +150,7 @@ TEST(BatteryFmu, LimitedWarningFollowsTheParticipantsRuleStepByStep) {
     const double t = 0.01 * k;
     if (k > 0) {
       const Drive d = drive(k - 1);
-      f.setReal(P, d.emachine_W);
-      f.setReal(dcdc, d.dcdc_W);
-      f.setReal(v, d.speed_m_s);
+      inputs.set(f, d);
       f.doStep(0.01);
       native.step(0.01, BatteryInputs{d.emachine_W + d.dcdc_W, units::celsiusToK(0.0), d.speed_m_s});
     }

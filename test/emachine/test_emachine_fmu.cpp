@@ -61,6 +61,26 @@ class NativeVariables : public fmi::exported::generated::VariablesModel {
   void doStep(double) override {}
 };
 
+// The FMU's inputs, resolved by name once; set() writes one step's Inputs (the cooling inputs
+// only if with_cooling: otherwise the FMU runs at its ambient).
+struct FmuInputs {
+  fmi::VariableRef T, w, V, Tc, Te;
+  explicit FmuInputs(const fmi::CsInstance& f)
+      : T(f.settable("ems.command.em_torque_request_nm", VarType::kReal)),
+        w(f.settable("ems.command.engine_speed_rad_s", VarType::kReal)),
+        V(f.settable("battery.state.terminal_voltage_v", VarType::kReal)),
+        Tc(f.settable("cooling.state.coolant_lt_temperature_k", VarType::kReal)),
+        Te(f.settable("cooling.state.metal_temperature_k", VarType::kReal)) {}
+  void set(fmi::CsInstance& f, const Inputs& in, bool with_cooling) const {
+    f.setReal(T, in.cmd.em_torque_request_nm);
+    f.setReal(w, in.cmd.engine_speed_rad_s);
+    f.setReal(V, in.battery.terminal_voltage_v);
+    if (!with_cooling) return;
+    f.setReal(Tc, in.cooling.coolant_lt_temperature_k);
+    f.setReal(Te, in.cooling.metal_temperature_k);
+  }
+};
+
 void runAgainstLibrary(bool with_cooling) {
   auto loaded = fmi::testing::loadExported("emachine", with_cooling ? "cooling" : "ambient");
   std::vector<std::string> log;
@@ -72,22 +92,12 @@ void runAgainstLibrary(bool with_cooling) {
   EMachineModel native = nativeModel();
   native.reset(ambient_K);
   const std::vector<fmi::VariableRef> outputs = fmi::testing::outputRefs(f, *loaded, VarType::kReal);  // by name
-  const auto T = f.settable("ems.command.em_torque_request_nm", VarType::kReal);
-  const auto w = f.settable("ems.command.engine_speed_rad_s", VarType::kReal);
-  const auto V = f.settable("battery.state.terminal_voltage_v", VarType::kReal);
-  const auto Tc = f.settable("cooling.state.coolant_lt_temperature_k", VarType::kReal);
-  const auto Te = f.settable("cooling.state.metal_temperature_k", VarType::kReal);
+  const FmuInputs inputs(f);
   const auto torque = f.gettable("emachine.state.torque_nm", VarType::kReal);
   double min_torque_Nm = 0.0;
   for (int k = 0; k < 4000; ++k) {
     const Inputs in = drive(k);
-    f.setReal(T, in.cmd.em_torque_request_nm);
-    f.setReal(w, in.cmd.engine_speed_rad_s);
-    f.setReal(V, in.battery.terminal_voltage_v);
-    if (with_cooling) {
-      f.setReal(Tc, in.cooling.coolant_lt_temperature_k);
-      f.setReal(Te, in.cooling.metal_temperature_k);
-    }
+    inputs.set(f, in, with_cooling);
     f.doStep(0.01);
     native.step(0.01, emachineInputs(in.cmd, in.battery, with_cooling ? &in.cooling : nullptr, ambient_K));
     NativeVariables nv;
@@ -124,16 +134,9 @@ TEST(EMachineFmu, DeratingWarningFollowsTheParticipantsRuleStepByStep) {
   auto loaded = fmi::testing::loadExported("emachine", "warning");
   fmi::CsInstance f(loaded, "emachine", [](const std::string&, fmi2Status, const std::string&, const std::string&) {});
   const double ambient_c = 60.0, ambient_K = units::celsiusToK(ambient_c);
-  f.setupExperiment(1e-6, 0.0, kEnd_s);
-  f.setReal(f.settable("scenario.ambient_temperature_c", VarType::kReal), ambient_c);
-  f.enterInitializationMode();
-  f.exitInitializationMode();
+  fmi::testing::initializeAtAmbient(f, ambient_c, kEnd_s);
   const auto warning = f.gettable("emachine.warning.emachine_derating", VarType::kBoolean);
-  const auto T = f.settable("ems.command.em_torque_request_nm", VarType::kReal);
-  const auto w = f.settable("ems.command.engine_speed_rad_s", VarType::kReal);
-  const auto V = f.settable("battery.state.terminal_voltage_v", VarType::kReal);
-  const auto Tc = f.settable("cooling.state.coolant_lt_temperature_k", VarType::kReal);
-  const auto Te = f.settable("cooling.state.metal_temperature_k", VarType::kReal);
+  const FmuInputs inputs(f);
   const auto thresholds = fmi::exported::readResourceWarnings<EMachineWarnings>("config/emachine.yaml");
   EMachineModel native = nativeModel();
   native.reset(ambient_K);
@@ -143,11 +146,7 @@ TEST(EMachineFmu, DeratingWarningFollowsTheParticipantsRuleStepByStep) {
     const double t = 0.01 * k;
     if (k > 0) {
       const Inputs in = heatThenCool(0.01 * (k - 1));
-      f.setReal(T, in.cmd.em_torque_request_nm);
-      f.setReal(w, in.cmd.engine_speed_rad_s);
-      f.setReal(V, in.battery.terminal_voltage_v);
-      f.setReal(Tc, in.cooling.coolant_lt_temperature_k);
-      f.setReal(Te, in.cooling.metal_temperature_k);
+      inputs.set(f, in, true);
       f.doStep(0.01);
       native.step(0.01, emachineInputs(in.cmd, in.battery, &in.cooling, ambient_K));
     }

@@ -74,8 +74,8 @@ inline std::shared_ptr<const LoadedFmu> loadExported(const std::string& model, c
 }
 
 /// The instance set up from t = 0 with scenario.ambient_temperature_c [degC] and initialised.
-inline void initializeAtAmbient(CsInstance& inst, double ambient_c) {
-  inst.setupExperiment(1e-6, 0.0, 100.0);
+inline void initializeAtAmbient(CsInstance& inst, double ambient_c, double stop_s = 100.0) {
+  inst.setupExperiment(1e-6, 0.0, stop_s);
   inst.setReal(inst.settable("scenario.ambient_temperature_c", VarType::kReal), ambient_c);
   inst.enterInitializationMode();
   inst.exitInitializationMode();
