@@ -182,10 +182,10 @@ TEST(Rig, PhysicalTrends) {
   EXPECT_LT(h.lambda, base.lambda);
   // Advanced injection: higher peak pressure and more NO, the direction of the classic timing
   // lever (Khair, DieselNet "Engine Design for NOx Control"): the fuel burns nearer TDC, with
-  // hotter, denser charge. Size: retarding a turbocharged DI diesel's injection from 20 to 18 and
-  // 16 deg bTDC cut its NOx by 11 % (Sakarya University repository, handle 20.500.12619/49693,
-  // Elsevier Masson 2007: an LHR engine against its standard build); the hot-zone model gives
-  // +14 % for these 4 deg, required: > +8 % (the published 11 % with a margin for the engine).
+  // hotter, denser charge. Size: retarding the injection of a turbocharged DI diesel with a
+  // low-heat-rejection (coated) chamber from 20 to 18 and 16 deg bTDC cut its NOx by 11 % (Sakarya
+  // University repository, handle 20.500.12619/49693, Elsevier Masson 2007); the hot-zone model
+  // gives +14 % for these 4 deg, required: > +8 % (the published 11 % with a margin).
   // From a fixed SOI of 5 deg bTDC to 9 deg bTDC (independent of the calibrated map, whose SOI
   // here is after TDC: there the peak pressure is the compression peak either way).
   CylinderParams early = cp0, adv = cp0;
