@@ -23,8 +23,7 @@ std::string describeWriteFailure(const std::string& file, const std::string& wha
 }
 
 AsyncBagWriter::AsyncBagWriter(const std::string& file, std::size_t max_queued_bytes)
-    : file_(file), max_queued_bytes_(max_queued_bytes) {
-  bag_->open(file, rosbag::bagmode::Write);
+    : file_(file), max_queued_bytes_(max_queued_bytes), bag_(std::make_unique<BagFileWriter>(file)) {
   thread_ = std::thread(&AsyncBagWriter::run, this);
 }
 
@@ -94,7 +93,6 @@ void AsyncBagWriter::close() {
   try {
     bag_->close();  // writes the index: the first to fail when the disk filled at the very end
   } catch (const std::exception& e) {
-    (void)bag_.release();  // see bag_
     std::lock_guard<std::mutex> lk(m_);
     if (error_.empty()) error_ = describeWriteFailure(file_, e.what());
   }

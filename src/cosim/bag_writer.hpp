@@ -14,7 +14,7 @@
 // Errors: a failed write (disk full, ...) is remembered; the next write() or close() throws it
 // as std::runtime_error naming the file, so the run stops instead of losing data silently.
 #pragma once
-#include <rosbag/bag.h>
+#include "cosim/bag_file.hpp"
 
 #include <condition_variable>
 #include <deque>
@@ -48,7 +48,7 @@ class AsyncBagWriter {
   /// string, time, shared pointer) on the heap, the deque slot, the message's own allocation header.
   static constexpr std::size_t kJobOverhead_bytes = 160;
 
-  /// Opens `file` for writing (throws rosbag::BagException) and starts the writer thread.
+  /// Opens `file` for writing (throws std::runtime_error naming it) and starts the writer thread.
   explicit AsyncBagWriter(const std::string& file, std::size_t max_queued_bytes = kDefaultMaxQueued_bytes);
   ~AsyncBagWriter();
   AsyncBagWriter(const AsyncBagWriter&) = delete;
@@ -59,7 +59,7 @@ class AsyncBagWriter {
   template <class Ptr>
   void write(const std::string& topic, const ros::Time& t, Ptr m) {
     const std::size_t bytes = ros::serialization::serializationLength(*m) + topic.size() + kJobOverhead_bytes;
-    push([topic, t, m](rosbag::Bag& bag) { bag.write(topic, t, *m); }, bytes);
+    push([topic, t, m](BagFileWriter& bag) { bag.write(topic, t, *m); }, bytes);
   }
   /// Writes everything queued, stops the thread and closes the bag; throws a write error.
   void close();
@@ -69,7 +69,7 @@ class AsyncBagWriter {
   BagQueueStats queueStats() const;
 
  private:
-  using Job = std::function<void(rosbag::Bag&)>;
+  using Job = std::function<void(BagFileWriter&)>;
   struct Queued {
     Job job;
     std::size_t bytes;  // [B] counted against the budget
@@ -80,9 +80,7 @@ class AsyncBagWriter {
 
   std::string file_;
   std::size_t max_queued_bytes_;
-  // rosbag's destructor closes again and would throw (terminate) after a failed close: a bag whose
-  // close failed is released, its descriptor left to the process end (an error path only)
-  std::unique_ptr<rosbag::Bag> bag_ = std::make_unique<rosbag::Bag>();
+  std::unique_ptr<BagFileWriter> bag_;
   mutable std::mutex m_;
   std::condition_variable cv_work_, cv_space_;
   std::deque<Queued> queue_;

@@ -52,9 +52,8 @@ void Recorder::configure() {
     if (!(diag_wait_s_ >= 0.0 && diag_wait_s_ <= 60.0))
       throw InputError(where, "diagnostics_wait_s", "must be in [0, 60] s");
     diag_file_ = diag_file;
-    diag_bag_ = std::make_unique<rosbag::Bag>();
     try {
-      diag_bag_->open(diag_file, rosbag::bagmode::Write);
+      diag_bag_ = std::make_unique<BagFileWriter>(diag_file);
     } catch (const std::exception& e) {
       throw InputError(where, "diagnostics_bag_file", "cannot open '" + diag_file + "': " + e.what());
     }
@@ -107,7 +106,8 @@ void Recorder::topicsAnnounced(const std::vector<std::string>& topics,
 
 void Recorder::writeDiagnostics(const diagnostic_msgs::DiagnosticArray& m) {
   if (!diag_error_.empty()) return;  // failed before: the run is stopping on it
-  const ros::Time t = m.header.stamp.isZero() ? ros::Time(0, 1) : m.header.stamp;  // rosbag refuses 0
+  // rosbag::Bag refuses time 0 (and rosbag play would too): the first status at 1 ns
+  const ros::Time t = m.header.stamp.isZero() ? ros::Time(0, 1) : m.header.stamp;
   try {
     diag_bag_->write("/diagnostics", t, m);
   } catch (const std::exception& e) {  // (in a callback: remembered, raised by the next step)
@@ -186,11 +186,10 @@ void Recorder::close(const ros::Time& t_end, bool aborted) {
     diag_timer_.stop();
     try {
       diag_bag_->close();
-      diag_bag_.reset();
     } catch (const std::exception& e) {
       if (diag_error_.empty()) diag_error_ = describeWriteFailure(diag_file_, e.what());
-      (void)diag_bag_.release();  // its destructor would close again and throw (terminate)
     }
+    diag_bag_.reset();
   }
   if (!run_bag_error.empty()) throw std::runtime_error(run_bag_error);
   if (!diag_error_.empty()) throw std::runtime_error(diag_error_);

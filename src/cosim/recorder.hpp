@@ -38,7 +38,6 @@
 // roslaunch stops the run (the stepper is a required node).
 #pragma once
 #include <diagnostic_msgs/DiagnosticArray.h>
-#include <rosbag/bag.h>
 #include <topic_tools/shape_shifter.h>
 
 #include <map>
@@ -79,7 +78,7 @@ class Recorder : public Participant {
   std::unique_ptr<AsyncBagWriter> bag_;   // run.bag, written on its own thread
   std::string bag_file_;     // its path
   std::string status_file_;  // the run's status.json (written here only if the stepper fell silent)
-  std::unique_ptr<rosbag::Bag> diag_bag_;
+  std::unique_ptr<BagFileWriter> diag_bag_;  // written on the recorder's thread (few messages)
   std::string diag_file_;   // its file name (messages)
   std::string diag_error_;  // a failed write of it: stops the run at the next step
   ros::Subscriber diag_sub_;
