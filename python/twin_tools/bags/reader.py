@@ -13,9 +13,8 @@ class BagError(Exception):
     """An input that is not a readable bag (or lacks what the tool needs); str() is the message."""
 
 
-def open_bag(path, mode="r"):
-    """rosbag.Bag opened for reading (mode "r") or appending ("a"); BagError naming path and cause
-    otherwise."""
+def check_bag_file(path):
+    """BagError naming path unless it is a file that starts as a ROS bag format 2.0."""
     if not os.path.exists(path):
         raise BagError("%s: no such file" % path)
     if os.path.isdir(path):
@@ -29,6 +28,12 @@ def open_bag(path, mode="r"):
         raise BagError("%s: cannot be read: %s" % (path, e.strerror or e))
     if head != BAG_MAGIC:
         raise BagError("%s: not a ROS bag (it does not start with '#ROSBAG V2.0')" % path)
+
+
+def open_bag(path, mode="r"):
+    """rosbag.Bag opened for reading (mode "r") or appending ("a"); BagError naming path and cause
+    otherwise."""
+    check_bag_file(path)
     import rosbag
     try:
         return rosbag.Bag(path, mode)

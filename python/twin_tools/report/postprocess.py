@@ -24,7 +24,8 @@ import sys
 
 import numpy as np
 
-from twin_tools.bags.reader import BagError, open_bag
+from twin_tools.bags.columns import Unsupported, read_columns
+from twin_tools.bags.reader import BagError, check_bag_file, open_bag
 from twin_tools.report import diagnostics, hvac, hybrid, ledger, thermal
 from twin_tools.units import DIESEL_DENSITY_KG_L
 from twin_tools import wiring
@@ -55,8 +56,24 @@ def numeric_fields(msg):
 
 
 def read_run(path):
-    """(run info, data) of a bag in one pass: the run's metadata (/twin/run_info, JSON) and
-    {topic: {field: np.array}} with 't' = header.stamp [s], numeric fields only (bool as 0/1)."""
+    """(run info, data) of a bag: the run's metadata (/twin/run_info, JSON) and {topic: {field:
+    np.array}} with 't' = header.stamp [s], numeric fields only (bool as 0/1). Read as columns
+    (twin_tools.bags.columns); a bag that reader does not handle (compressed, unindexed) through
+    rosbag, message by message, with the same result."""
+    check_bag_file(path)
+    try:
+        data, messages = read_columns(path, messages_of=(RUN_INFO_TOPIC,))
+        info = json.loads(messages[RUN_INFO_TOPIC][-1].data) if messages.get(RUN_INFO_TOPIC) else None
+    except Unsupported:
+        info, data = read_run_rosbag(path)
+    if info is None:
+        sys.exit("twin: %s has no %s (not written by scripts/twin run, or the run did not end)"
+                 % (path, RUN_INFO_TOPIC))
+    return info, data
+
+
+def read_run_rosbag(path):
+    """read_run through rosbag.Bag.read_messages(): (run info or None, data)."""
     info, data, fields = None, {}, {}
     with open_bag(path) as bag:
         for topic, msg, _ in bag.read_messages():
@@ -70,9 +87,6 @@ def read_run(path):
             d["t"].append(msg.header.stamp.to_sec())
             for f in fields[topic]:
                 d[f].append(float(getattr(msg, f)))
-    if info is None:
-        sys.exit("twin: %s has no %s (not written by scripts/twin run, or the run did not end)"
-                 % (path, RUN_INFO_TOPIC))
     return info, {k: {f: np.asarray(v) for f, v in d.items()} for k, d in data.items()}
 
 
