@@ -5,7 +5,9 @@ integers, floats down to the smallest normal, strings and arrays), the columns e
 over rosbag.Bag.read_messages() gives (postprocess.read_run_rosbag), array for array and bit for
 bit, over several chunks; topics whose layout varies (a header frame_id of changing length) are
 read message by message with the same result. A compressed or cut bag is not this reader's
-(Unsupported) and read_run still gives rosbag's result."""
+(Unsupported) and read_run still gives rosbag's result. twin_tools.bags.append (the run's metadata appended after a
+run) leaves a bag rosbag reads as the one its own append gives: the same messages, times and
+topics."""
 import os
 import random
 import shutil
@@ -128,6 +130,44 @@ class BagColumns(unittest.TestCase):
             g.write(f.read(os.path.getsize(self.bag) // 2))
         with self.assertRaises(Unsupported):
             read_columns(cut)
+
+    def test_append_reads_as_rosbags_append(self):
+        import rosbag
+        import rospy
+        from std_msgs.msg import String
+        from twin_tools.bags.append import append_at_end
+        from twin_tools.bags.columns import read_columns
+        for topic in ("/twin/run_info", "/t1/" + self.types[1]._type.split("/")[1]):  # a new topic, a known one
+            if topic != "/twin/run_info":
+                msg = self.types[1]()
+                fill(msg, random.Random(3), 5, False)
+            else:
+                msg = String(data='{"run": "info"}')
+            ours, theirs = os.path.join(self.tmp, "ours.bag"), os.path.join(self.tmp, "theirs.bag")
+            shutil.copy(self.bag, ours)
+            shutil.copy(self.bag, theirs)
+            append_at_end(ours, topic, msg)
+            append_at_end(ours, topic, msg)  # twice: an appended bag appends again
+            for _ in range(2):
+                with rosbag.Bag(theirs, "a") as bag:
+                    bag.write(topic, msg, rospy.Time.from_sec(bag.get_end_time()))
+            with rosbag.Bag(ours) as a, rosbag.Bag(theirs) as b:
+                ra, rb = {}, {}  # per topic, in order (at equal times the order across topics is rosbag's choice)
+                for bag, out in ((a, ra), (b, rb)):
+                    for tp, raw, t in bag.read_messages(raw=True):
+                        out.setdefault(tp, []).append((raw[1], t))
+                self.assertEqual(sorted(ra), sorted(rb))
+                self.assertTrue(ra == rb, topic)
+                self.assertEqual(a.get_end_time(), b.get_end_time())
+                # (rosbag's append opens a connection per append, ours reuses the topic's)
+                ta, tb = a.get_type_and_topic_info().topics, b.get_type_and_topic_info().topics
+                self.assertEqual({k: (v.msg_type, v.message_count) for k, v in ta.items()},
+                                 {k: (v.msg_type, v.message_count) for k, v in tb.items()})
+            cols, msgs = read_columns(ours, messages_of=("/twin/run_info",))
+            if topic == "/twin/run_info":
+                self.assertEqual([m.data for m in msgs[topic]], ['{"scenario": "x"}'] + 2 * ['{"run": "info"}'])
+            else:
+                self.assertEqual(len(cols[topic]["t"]), 602)
 
 
 if __name__ == "__main__":

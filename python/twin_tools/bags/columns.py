@@ -39,7 +39,7 @@ class Unsupported(Exception):
     """A bag (or part of one) this reader does not handle: read it with rosbag instead."""
 
 
-def _header_fields(buf, pos, end):
+def header_fields(buf, pos, end):
     out = {}
     while pos < end:
         (n,) = _U32.unpack_from(buf, pos)
@@ -49,10 +49,10 @@ def _header_fields(buf, pos, end):
     return out
 
 
-def _record(buf, pos):
+def read_record(buf, pos):
     """(header fields, data start, data length, next record) of the record at pos."""
     (hlen,) = _U32.unpack_from(buf, pos)
-    fields = _header_fields(buf, pos + 4, pos + 4 + hlen)
+    fields = header_fields(buf, pos + 4, pos + 4 + hlen)
     (dlen,) = _U32.unpack_from(buf, pos + 4 + hlen)
     start = pos + 8 + hlen
     return fields, start, dlen, start + dlen
@@ -67,7 +67,7 @@ def _index(buf):
     arrays (bag time [ns], data offset, data length) in the file's order."""
     if buf[:len(BAG_MAGIC)] != BAG_MAGIC:
         raise Unsupported("not a format 2.0 bag")
-    head, _, _, _ = _record(buf, len(BAG_MAGIC))
+    head, _, _, _ = read_record(buf, len(BAG_MAGIC))
     if head.get("op") != bytes([_OP_FILE_HEADER]):
         raise Unsupported("no file header")
     index_pos = struct.unpack("<Q", head["index_pos"])[0]
@@ -75,19 +75,19 @@ def _index(buf):
         raise Unsupported("not indexed")
     conns, chunks, pos = {}, [], index_pos
     for _ in range(_u32(head, "conn_count")):
-        f, start, dlen, pos = _record(buf, pos)
+        f, start, dlen, pos = read_record(buf, pos)
         if f.get("op") != bytes([_OP_CONNECTION]):
             raise Unsupported("connection record expected")
-        c = _header_fields(buf, start, start + dlen)
+        c = header_fields(buf, start, start + dlen)
         conns[_u32(f, "conn")] = (f["topic"].decode(), c["type"].decode(), c["message_definition"].decode())
     for _ in range(_u32(head, "chunk_count")):
-        f, _, _, pos = _record(buf, pos)
+        f, _, _, pos = read_record(buf, pos)
         if f.get("op") != bytes([_OP_CHUNK_INFO]):
             raise Unsupported("chunk info record expected")
         chunks.append(struct.unpack("<Q", f["chunk_pos"])[0])
     records = {c: ([], [], []) for c in conns}
     for chunk_pos in sorted(chunks):
-        f, start, dlen, _ = _record(buf, chunk_pos)
+        f, start, dlen, _ = read_record(buf, chunk_pos)
         if f.get("op") != bytes([_OP_CHUNK]) or f.get("compression") != b"none":
             raise Unsupported("compressed chunk")
         pos, end = start, start + dlen
@@ -100,7 +100,7 @@ def _index(buf):
                 r[2].append(h[8])
                 pos += _MSG_RECORD.size + h[8]
                 continue
-            f, start_r, n, nxt = _record(buf, pos)
+            f, start_r, n, nxt = read_record(buf, pos)
             if f.get("op") == bytes([_OP_MESSAGE]):  # fields in another order: still a message
                 r = records[_u32(f, "conn")]
                 sec, nsec = struct.unpack("<II", f["time"])

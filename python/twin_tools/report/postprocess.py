@@ -24,6 +24,7 @@ import sys
 
 import numpy as np
 
+from twin_tools.bags.append import append_at_end
 from twin_tools.bags.columns import Unsupported, read_columns
 from twin_tools.bags.reader import BagError, check_bag_file, open_bag
 from twin_tools.report import diagnostics, hvac, hybrid, ledger, thermal
@@ -45,9 +46,14 @@ def store_run_info(bag_path, info):
     bag's end."""
     import rospy
     from std_msgs.msg import String
-    with open_bag(bag_path, "a") as bag:  # a bag cut short: BagError saying how to recover it
-        t_end = bag.get_end_time() if bag.get_message_count() else 1e-9
-        bag.write(RUN_INFO_TOPIC, String(data=json.dumps(info, sort_keys=True)), rospy.Time.from_sec(t_end))
+    msg = String(data=json.dumps(info, sort_keys=True))
+    check_bag_file(bag_path)
+    try:
+        append_at_end(bag_path, RUN_INFO_TOPIC, msg)  # without reading the index through rosbag
+    except Unsupported:
+        with open_bag(bag_path, "a") as bag:  # a bag cut short: BagError saying how to recover it
+            t_end = bag.get_end_time() if bag.get_message_count() else 1e-9
+            bag.write(RUN_INFO_TOPIC, msg, rospy.Time.from_sec(t_end))
 
 
 def numeric_fields(msg):
