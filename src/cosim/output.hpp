@@ -23,6 +23,7 @@
 
 #include "cosim/core/participant_core.hpp"
 #include "cosim/finite_check.hpp"
+#include "cosim/local_bus.hpp"
 
 namespace hbt::cosim {
 
@@ -32,8 +33,15 @@ inline std::string observerLane(const std::string& resolved_topic) { return "/tw
 class Output {
  public:
   Output() = default;
-  Output(ros::Publisher pub, ros::Publisher lane, core::ParticipantCore* core, std::size_t index)
-      : pub_(std::move(pub)), lane_(std::move(lane)), core_(core), index_(index) {}
+  /// `datatype`: the message type's name (ros::message_traits::datatype<M>()).
+  Output(ros::Publisher pub, ros::Publisher lane, core::ParticipantCore* core, std::size_t index,
+         const std::string& datatype)
+      : pub_(std::move(pub)),
+        lane_(std::move(lane)),
+        local_(std::make_shared<LocalPublisher>(LocalBus::topic(pub_.getTopic()), datatype)),
+        local_lane_(std::make_shared<LocalPublisher>(LocalBus::topic(lane_.getTopic()), datatype)),
+        core_(core),
+        index_(index) {}
 
   /// Throws ModelDivergence (topic, field, value, stamp) if a floating-point field of `m` is not
   /// finite (finite_check.hpp): the step fails and the run stops there.
@@ -41,10 +49,8 @@ class Output {
   void publish(const boost::shared_ptr<M>& m) const {
     const std::string bad = nonFiniteField(*m);
     if (!bad.empty()) throwNotFinite(bad, m->header.stamp.toSec());
-    const ros::Publisher& p = pub_;
-    const ros::Publisher& l = lane_;
-    core_->publish(index_, static_cast<core::Nanos>(m->header.stamp.toNSec()), [p, m] { p.publish(m); },
-                   [l, m] { l.publish(m); });
+    core_->publish(index_, static_cast<core::Nanos>(m->header.stamp.toNSec()), sender(pub_, local_, m),
+                   sender(lane_, local_lane_, m));
   }
   template <class M>
   void publish(const M& m) const {
@@ -55,7 +61,16 @@ class Output {
 
  private:
   [[noreturn]] void throwNotFinite(const std::string& field_value, double stamp_s) const;
+  /// Sends m to the in-process consumers, and through roscpp when others subscribe too.
+  template <class M>
+  static std::function<void()> sender(const ros::Publisher& p, const std::shared_ptr<LocalPublisher>& local,
+                                      const boost::shared_ptr<M>& m) {
+    return [p, local, m] {
+      if (local->deliver(m, [&p] { return p.getNumSubscribers(); })) p.publish(m);
+    };
+  }
   ros::Publisher pub_, lane_;
+  std::shared_ptr<LocalPublisher> local_, local_lane_;  // shared by the copies of this Output
   core::ParticipantCore* core_ = nullptr;
   std::size_t index_ = 0;
 };

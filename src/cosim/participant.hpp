@@ -145,7 +145,7 @@ class Participant {
     ros::Publisher lane = nh_.advertise<M>(observerLane(p.getTopic()), 1000);
     outputs_.push_back(p);
     outputs_.push_back(lane);
-    return Output(p, lane, &core_, core_.addOutput(p.getTopic()));
+    return Output(p, lane, &core_, core_.addOutput(p.getTopic()), ros::message_traits::datatype<M>());
   }
   /// Wired topics (wiring.hpp): `producer`'s output `key` as declared in its topics.yaml; this
   /// participant's own output `key`, likewise. Throw hbt::InputError when undeclared, of another

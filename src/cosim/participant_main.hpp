@@ -22,6 +22,7 @@
 #include <ros/ros.h>
 
 #include <atomic>
+#include <chrono>
 #include <cctype>
 #include <map>
 #include <memory>
@@ -34,16 +35,22 @@ namespace hbt::cosim {
 /// A callback queue + thread shared by the twin's nodelets of one `cosim/thread` name in this
 /// process. Held by each nodelet (shared_ptr): the thread starts with the first and stops with
 /// the last.
+/// poll_s = 0: the thread sleeps on the queue and every callback added wakes it (a futex wake
+/// and a thread switch each time it was idle). poll_s > 0 (the recorder's thread, a participant
+/// with a static kThreadPoll_s): it runs what is queued, then sleeps poll_s [s] instead of
+/// waiting to be woken -- for a thread that receives many small messages and must not hold the
+/// others up (its lag, at most poll_s, stays below the grant window).
 class LockstepQueue {
  public:
   static constexpr const char* kDefault = "lockstep";
-  static std::shared_ptr<LockstepQueue> acquire(const std::string& name = kDefault) {
+  /// poll_s applies when this call creates the queue (the first nodelet of the name).
+  static std::shared_ptr<LockstepQueue> acquire(const std::string& name = kDefault, double poll_s = 0.0) {
     static std::mutex m;
     static std::map<std::string, std::weak_ptr<LockstepQueue>> shared;
     std::lock_guard<std::mutex> lock(m);
     auto q = shared[name].lock();
     if (!q) {
-      q = std::shared_ptr<LockstepQueue>(new LockstepQueue());
+      q = std::shared_ptr<LockstepQueue>(new LockstepQueue(poll_s));
       shared[name] = q;
     }
     return q;
@@ -80,8 +87,13 @@ class LockstepQueue {
   }
 
  private:
-  LockstepQueue() : thread_([this] {
-    while (!stop_ && ros::ok()) queue_.callAvailable(ros::WallDuration(0.05));
+  explicit LockstepQueue(double poll_s) : thread_([this, poll_s] {
+    const auto poll = std::chrono::duration<double>(poll_s);
+    while (!stop_ && ros::ok()) {
+      if (poll_s <= 0.0) queue_.callAvailable(ros::WallDuration(0.05));
+      else if (queue_.isEmpty()) std::this_thread::sleep_for(poll);
+      else queue_.callAvailable(ros::WallDuration(0));
+    }
   }) {}
   ros::CallbackQueue queue_;
   std::atomic<bool> stop_{false};
@@ -123,6 +135,12 @@ int runNode(int argc, char** argv, const char* default_name) {
   return participant.failed() ? 1 : 0;
 }
 
+/// P::kThreadPoll_s if P declares it (the poll period of its thread, LockstepQueue), else 0.
+template <class P>
+constexpr auto threadPoll(int) -> decltype(P::kThreadPoll_s) { return P::kThreadPoll_s; }
+template <class P>
+constexpr double threadPoll(long) { return 0.0; }
+
 template <class P>
 class ParticipantNodelet : public nodelet::Nodelet {
  public:
@@ -133,7 +151,7 @@ class ParticipantNodelet : public nodelet::Nodelet {
 
  protected:
   void onInit() override {
-    queue_ = LockstepQueue::acquire(LockstepQueue::threadName(getPrivateNodeHandle()));
+    queue_ = LockstepQueue::acquire(LockstepQueue::threadName(getPrivateNodeHandle()), threadPoll<P>(0));
     participant_ = std::make_unique<P>(queue_->bind(getNodeHandle()), queue_->bind(getPrivateNodeHandle()));
     participant_->start();
   }

@@ -1,0 +1,85 @@
+#include "cosim/local_bus.hpp"
+
+#include <ros/callback_queue_interface.h>
+
+#include <algorithm>
+#include <boost/make_shared.hpp>
+#include <map>
+
+namespace hbt::cosim {
+
+namespace {
+
+/// One message for one consumer, called on the consumer's queue.
+class Delivery : public ros::CallbackInterface {
+ public:
+  Delivery(LocalSink* sink, boost::shared_ptr<const void> msg) : sink_(sink), msg_(std::move(msg)) {}
+  CallResult call() override {
+    sink_->deliverLocal(msg_);
+    return Success;
+  }
+
+ private:
+  LocalSink* sink_;
+  boost::shared_ptr<const void> msg_;
+};
+
+uint64_t removalId(const LocalSink* sink) { return reinterpret_cast<uint64_t>(sink); }
+
+}  // namespace
+
+void LocalTopic::setProducer(const std::string& datatype) {
+  std::lock_guard<std::mutex> lk(m_);
+  producer_datatype_ = datatype;
+}
+
+bool LocalTopic::servedLocally(const std::string& datatype) const {
+  std::lock_guard<std::mutex> lk(m_);
+  return !producer_datatype_.empty() && producer_datatype_ == datatype;
+}
+
+void LocalTopic::addConsumer(LocalSink* sink, const std::string& datatype, ros::CallbackQueueInterface* queue) {
+  std::lock_guard<std::mutex> lk(m_);
+  consumers_.push_back({sink, datatype, queue});
+}
+
+void LocalTopic::removeConsumer(LocalSink* sink) {
+  ros::CallbackQueueInterface* queue = nullptr;
+  {
+    std::lock_guard<std::mutex> lk(m_);
+    const auto it = std::find_if(consumers_.begin(), consumers_.end(), [&](const Consumer& c) { return c.sink == sink; });
+    if (it == consumers_.end()) return;
+    queue = it->queue;
+    consumers_.erase(it);
+  }
+  if (queue) queue->removeByID(removalId(sink));  // nothing of it is called after this
+}
+
+std::size_t LocalTopic::deliver(const boost::shared_ptr<const void>& msg, const std::string& datatype) {
+  std::lock_guard<std::mutex> lk(m_);
+  std::size_t n = 0;
+  for (const Consumer& c : consumers_) {
+    if (c.datatype != datatype || !c.queue) continue;
+    c.queue->addCallback(boost::make_shared<Delivery>(c.sink, msg), removalId(c.sink));
+    ++n;
+  }
+  return n;
+}
+
+std::shared_ptr<LocalTopic> LocalBus::topic(const std::string& resolved_name) {
+  static std::mutex m;
+  static std::map<std::string, std::shared_ptr<LocalTopic>> topics;
+  std::lock_guard<std::mutex> lk(m);
+  auto& t = topics[resolved_name];
+  if (!t) t = std::make_shared<LocalTopic>(resolved_name);
+  return t;
+}
+
+LocalPublisher::LocalPublisher(std::shared_ptr<LocalTopic> topic, std::string datatype)
+    : topic_(std::move(topic)), datatype_(std::move(datatype)) {
+  topic_->setProducer(datatype_);
+}
+
+LocalPublisher::~LocalPublisher() { topic_->setProducer(""); }
+
+}  // namespace hbt::cosim
