@@ -1,7 +1,6 @@
 // A rosbag written by a thread of its own. The recorder's lock-step thread only copies the
-// message held at t and queues it; serialisation and the file write (~19 µs per message on this
-// machine, 12 s of a 62 s full-mission nodelets run when done inline) run on the writer thread,
-// i.e. on the second core while the participants compute the next steps.
+// message held at t and queues it; serialisation and the file write (BagFileWriter, bag_file.hpp)
+// run on the writer thread, i.e. on the second core while the participants compute the next steps.
 // Order: jobs are written strictly in the order they were queued (one FIFO, one writer), so the
 // bag is byte-for-byte the one an inline writer gives (determinism is unchanged).
 // Memory: the queued jobs hold at most `max_queued_bytes` (each counted as its message's serialised
@@ -27,8 +26,7 @@
 namespace hbt::cosim {
 
 /// "writing <file>: <what>", and the cause where the file system tells it: "no space left on the
-/// device (0 bytes free)" when the device holding `file` is full (rosbag says only "Error
-/// writing" or "Error seeking").
+/// device (0 bytes free)" when the device holding `file` is full.
 std::string describeWriteFailure(const std::string& file, const std::string& what);
 
 /// The queue's high-water marks and how often the producer had to wait for the writer.
@@ -41,8 +39,8 @@ struct BagQueueStats {
 class AsyncBagWriter {
  public:
   /// [B] Queue budget of run.bag's writer: 4 MiB is ~10^4 of the twin's messages (~300 B each with
-  /// the job), ~0.2 s of the writer's work at ~19 us per message -- it absorbs the writer thread
-  /// being descheduled for that long, and bounds what a starved writer makes the process hold.
+  /// the job), about 1.5 s of simulated time of a mission -- it absorbs the writer thread being
+  /// descheduled for a while, and bounds what a starved writer makes the process hold.
   static constexpr std::size_t kDefaultMaxQueued_bytes = 4u << 20;
   /// [B] Memory of one queued job beside its message: the std::function with its captures (topic
   /// string, time, shared pointer) on the heap, the deque slot, the message's own allocation header.

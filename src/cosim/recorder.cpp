@@ -106,7 +106,7 @@ void Recorder::topicsAnnounced(const std::vector<std::string>& topics,
 
 void Recorder::writeDiagnostics(const diagnostic_msgs::DiagnosticArray& m) {
   if (!diag_error_.empty()) return;  // failed before: the run is stopping on it
-  // rosbag::Bag refuses time 0 (and rosbag play would too): the first status at 1 ns
+  // bag times start at ros::TIME_MIN (1 ns): rosbag::Bag refuses 0, so the first status is at 1 ns
   const ros::Time t = m.header.stamp.isZero() ? ros::Time(0, 1) : m.header.stamp;
   try {
     diag_bag_->write("/diagnostics", t, m);
