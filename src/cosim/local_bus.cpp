@@ -55,15 +55,29 @@ void LocalTopic::removeConsumer(LocalSink* sink) {
   if (queue) queue->removeByID(removalId(sink));  // nothing of it is called after this
 }
 
-std::size_t LocalTopic::deliver(const boost::shared_ptr<const void>& msg, const std::string& datatype) {
+void LocalTopic::addRosConsumer() {
   std::lock_guard<std::mutex> lk(m_);
-  std::size_t n = 0;
+  ++ros_consumers_;
+}
+
+void LocalTopic::removeRosConsumer() {
+  std::lock_guard<std::mutex> lk(m_);
+  if (ros_consumers_ > 0) --ros_consumers_;
+}
+
+LocalTopic::Delivered LocalTopic::deliver(const boost::shared_ptr<const void>& msg, const std::string& datatype) {
+  std::lock_guard<std::mutex> lk(m_);
+  Delivered d;
+  d.ros_consumer = ros_consumers_ > 0;
   for (const Consumer& c : consumers_) {
-    if (c.datatype != datatype || !c.queue) continue;
+    if (c.datatype != datatype || !c.queue) {
+      d.ros_consumer = true;  // another type on this topic: roscpp's business (and its error)
+      continue;
+    }
     c.queue->addCallback(boost::make_shared<Delivery>(c.sink, msg), removalId(c.sink));
-    ++n;
+    ++d.direct;
   }
-  return n;
+  return d;
 }
 
 std::shared_ptr<LocalTopic> LocalBus::topic(const std::string& resolved_name) {

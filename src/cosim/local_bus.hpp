@@ -16,9 +16,15 @@
 //    messages, if roscpp also publishes them).
 //  - Every other subscriber -- another process (mode:=nodes, other hosts), a tool (rostopic,
 //    rviz), the recorder's type-erased inputs -- is served by roscpp: the producer publishes
-//    through roscpp too whenever the topic has more roscpp subscribers than direct consumers
-//    (checked every kRecheckPublishes publishes, so a tool that connects mid-run is served
-//    from then on).
+//    through roscpp too whenever the topic has such subscribers. roscpp counts all subscribers
+//    inside one process as one link (they share one subscription), so that is: more roscpp
+//    subscriber links than the one of the direct consumers, or an in-process roscpp-only
+//    consumer registered here (addRosConsumer: the recorder's type-erased inputs). Checked every
+//    kRecheckPublishes publishes, so a tool that connects mid-run is served from then on.
+//    A subscriber inside the nodelet manager that is neither a participant's input nor
+//    registered here (a nodelet of one's own subscribing with roscpp) shares that one link and
+//    is not seen: it receives the topic only while something else makes roscpp publish it. Run
+//    such a subscriber in a process of its own, or as a participant.
 // The roscpp subscriptions stay in place for all inputs: the link check before START, the
 // master's graph (rqt_graph, rosnode info) and remote producers are unchanged.
 #pragma once
@@ -61,8 +67,18 @@ class LocalTopic {
   void addConsumer(LocalSink* sink, const std::string& datatype, ros::CallbackQueueInterface* queue);
   void removeConsumer(LocalSink* sink);
 
-  /// Delivers `msg` (of `datatype`) to the direct consumers; returns how many got it.
-  std::size_t deliver(const boost::shared_ptr<const void>& msg, const std::string& datatype);
+  /// An in-process consumer served by roscpp only (a type-erased input): the producer always
+  /// publishes through roscpp while one is registered.
+  void addRosConsumer();
+  void removeRosConsumer();
+
+  /// What deliver() did: direct consumers served, and whether an in-process consumer needs roscpp.
+  struct Delivered {
+    std::size_t direct = 0;
+    bool ros_consumer = false;  // a roscpp-only or other-typed consumer in this process
+  };
+  /// Delivers `msg` (of `datatype`) to the direct consumers.
+  Delivered deliver(const boost::shared_ptr<const void>& msg, const std::string& datatype);
 
  private:
   struct Consumer {
@@ -74,6 +90,7 @@ class LocalTopic {
   mutable std::mutex m_;
   std::string producer_datatype_;  // empty: no producer in this process
   std::vector<Consumer> consumers_;
+  std::size_t ros_consumers_ = 0;
 };
 
 /// The process's topics (one registry per process: every nodelet of the manager shares it).
@@ -90,12 +107,16 @@ class LocalPublisher {
   LocalPublisher(const LocalPublisher&) = delete;
   LocalPublisher& operator=(const LocalPublisher&) = delete;
   /// Delivers `msg` to the direct consumers; true when roscpp must publish it as well
-  /// (`ros_subscribers`: roscpp's count, read only every kRecheckPublishes calls).
-  template <class CountRosSubscribers>
-  bool deliver(const boost::shared_ptr<const void>& msg, CountRosSubscribers&& ros_subscribers) {
-    const std::size_t direct = topic_->deliver(msg, datatype_);
-    if (publishes_++ % LocalTopic::kRecheckPublishes == 0) ros_needed_ = ros_subscribers() > direct;
-    return ros_needed_;
+  /// (`ros_subscriber_links`: roscpp's Publisher::getNumSubscribers(), read only every
+  /// kRecheckPublishes calls; the process's own subscribers are one link of it).
+  template <class CountRosSubscriberLinks>
+  bool deliver(const boost::shared_ptr<const void>& msg, CountRosSubscriberLinks&& ros_subscriber_links) {
+    const LocalTopic::Delivered d = topic_->deliver(msg, datatype_);
+    if (publishes_++ % LocalTopic::kRecheckPublishes == 0) {
+      const std::size_t own_link = d.direct > 0 ? 1 : 0;
+      ros_needed_ = d.ros_consumer || static_cast<std::size_t>(ros_subscriber_links()) > own_link;
+    }
+    return ros_needed_ || d.ros_consumer;
   }
 
  private:

@@ -36,8 +36,15 @@ class RawInput : public InputBase {
   using Ptr = topic_tools::ShapeShifter::ConstPtr;
   RawInput(ros::NodeHandle& nh, const std::string& topic, std::function<void()> cb, const std::string& subscribe_to)
       : InputBase(topic), resolved_(nh.resolveName(topic)), cb_(std::move(cb)) {
-    sub_ = nh.subscribe<topic_tools::ShapeShifter>(subscribe_to.empty() ? topic : subscribe_to, 1000,
-                                                   &RawInput::callback, this, ros::TransportHints().tcpNoDelay());
+    const std::string source = subscribe_to.empty() ? topic : subscribe_to;
+    local_ = LocalBus::topic(nh.resolveName(source));
+    local_->addRosConsumer();  // served by roscpp: its producer in this process publishes through it
+    sub_ = nh.subscribe<topic_tools::ShapeShifter>(source, 1000, &RawInput::callback, this,
+                                                   ros::TransportHints().tcpNoDelay());
+  }
+  ~RawInput() override {
+    sub_.shutdown();
+    local_->removeRosConsumer();
   }
   bool has(const ros::Time& t) const override { return buf_.count(t) > 0; }
   const Ptr& at(const ros::Time& t) const { return buf_.at(heldStamp(t)); }
@@ -59,6 +66,7 @@ class RawInput : public InputBase {
     cb_();
   }
   std::string resolved_;
+  std::shared_ptr<LocalTopic> local_;
   ros::Subscriber sub_;
   std::map<ros::Time, Ptr> buf_;
   std::vector<uint8_t> bytes_;
