@@ -3,6 +3,7 @@
 #include <sys/statvfs.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <stdexcept>
 
@@ -49,8 +50,9 @@ void AsyncBagWriter::push(Job job, std::size_t bytes) {
   queued_bytes_ += bytes;
   stats_.high_water_bytes = std::max(stats_.high_water_bytes, queued_bytes_);
   stats_.high_water_messages = std::max(stats_.high_water_messages, queue_.size());
+  const bool wake = queued_bytes_ >= max_queued_bytes_ / kWakeFraction;  // else it polls
   lk.unlock();
-  cv_work_.notify_one();
+  if (wake) cv_work_.notify_one();
 }
 
 void AsyncBagWriter::run() {
@@ -58,8 +60,11 @@ void AsyncBagWriter::run() {
     Job job;
     {
       std::unique_lock<std::mutex> lk(m_);
-      cv_work_.wait(lk, [this] { return !queue_.empty() || stop_; });
-      if (queue_.empty()) return;  // stop_ and drained
+      cv_work_.wait_for(lk, std::chrono::duration<double>(kPoll_s), [this] { return !queue_.empty() || stop_; });
+      if (queue_.empty()) {
+        if (stop_) return;  // stopped and drained
+        continue;           // nothing queued within the poll period
+      }
       job = std::move(queue_.front().job);
       queued_bytes_ -= queue_.front().bytes;
       queue_.pop_front();

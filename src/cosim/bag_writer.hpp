@@ -10,6 +10,10 @@
 // queue held at most, which the process's heap keeps after the queue drains (glibc returns freed
 // small chunks to its arena, not to the system) -- the soak bench compares the manager's memory
 // rise within a mission with it.
+// Wake-ups: the writer drains the queue and then sleeps kPoll_s; a producer wakes it only when
+// the queue holds 1/kWakeFraction of its budget (or at close). A wake-up per message (a futex
+// call each, ~730,000 in a mission) cost the recorder more than the write itself once that got
+// cheap.
 // Errors: a failed write (disk full, ...) is remembered; the next write() or close() throws it
 // as std::runtime_error naming the file, so the run stops instead of losing data silently.
 #pragma once
@@ -45,6 +49,10 @@ class AsyncBagWriter {
   /// [B] Memory of one queued job beside its message: the std::function with its captures (topic
   /// string, time, shared pointer) on the heap, the deque slot, the message's own allocation header.
   static constexpr std::size_t kJobOverhead_bytes = 160;
+  /// [s] The writer's sleep when the queue is empty (a queue that fills faster wakes it earlier).
+  static constexpr double kPoll_s = 2e-3;
+  /// A producer wakes the writer once the queue holds max_queued_bytes / kWakeFraction.
+  static constexpr std::size_t kWakeFraction = 4;
 
   /// Opens `file` for writing (throws std::runtime_error naming it) and starts the writer thread.
   explicit AsyncBagWriter(const std::string& file, std::size_t max_queued_bytes = kDefaultMaxQueued_bytes);
