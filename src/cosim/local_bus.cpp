@@ -39,20 +39,24 @@ bool LocalTopic::servedLocally(const std::string& datatype) const {
 }
 
 void LocalTopic::addConsumer(LocalSink* sink, const std::string& datatype, ros::CallbackQueueInterface* queue) {
+  const auto thread = LocalBus::threadOf(queue);
   std::lock_guard<std::mutex> lk(m_);
-  consumers_.push_back({sink, datatype, queue});
+  consumers_.push_back({sink, datatype, queue, thread.first, thread.second});
 }
 
 void LocalTopic::removeConsumer(LocalSink* sink) {
   ros::CallbackQueueInterface* queue = nullptr;
+  LocalThreadQueue* fifo = nullptr;
   {
     std::lock_guard<std::mutex> lk(m_);
     const auto it = std::find_if(consumers_.begin(), consumers_.end(), [&](const Consumer& c) { return c.sink == sink; });
     if (it == consumers_.end()) return;
     queue = it->queue;
+    fifo = it->own_thread_queue;
     consumers_.erase(it);
   }
   if (queue) queue->removeByID(removalId(sink));  // nothing of it is called after this
+  if (fifo) fifo->remove(sink);                    // (its thread is stopped: nodelet unload)
 }
 
 void LocalTopic::addRosConsumer() {
@@ -74,10 +78,52 @@ LocalTopic::Delivered LocalTopic::deliver(const boost::shared_ptr<const void>& m
       d.ros_consumer = true;  // another type on this topic: roscpp's business (and its error)
       continue;
     }
-    c.queue->addCallback(boost::make_shared<Delivery>(c.sink, msg), removalId(c.sink));
+    if (c.own_thread_queue && c.owner == std::this_thread::get_id())
+      c.own_thread_queue->post(c.sink, msg);  // published on the consumer's own thread
+    else
+      c.queue->addCallback(boost::make_shared<Delivery>(c.sink, msg), removalId(c.sink));
     ++d.direct;
   }
   return d;
+}
+
+bool LocalThreadQueue::drain() {
+  if (items_.empty()) return false;
+  while (!items_.empty()) {
+    Item item = std::move(items_.front());
+    items_.pop_front();
+    item.sink->deliverLocal(item.msg);  // may post more: delivered in this same loop
+  }
+  return true;
+}
+
+void LocalThreadQueue::remove(const LocalSink* sink) {
+  items_.erase(std::remove_if(items_.begin(), items_.end(), [&](const Item& i) { return i.sink == sink; }),
+               items_.end());
+}
+
+namespace {
+std::mutex threads_mutex;
+std::map<ros::CallbackQueueInterface*, std::pair<LocalThreadQueue*, std::thread::id>>& threads() {
+  static std::map<ros::CallbackQueueInterface*, std::pair<LocalThreadQueue*, std::thread::id>> t;
+  return t;
+}
+}  // namespace
+
+void LocalBus::serveThread(ros::CallbackQueueInterface* queue, LocalThreadQueue* fifo, std::thread::id owner) {
+  std::lock_guard<std::mutex> lk(threads_mutex);
+  threads()[queue] = {fifo, owner};
+}
+
+void LocalBus::unserveThread(ros::CallbackQueueInterface* queue) {
+  std::lock_guard<std::mutex> lk(threads_mutex);
+  threads().erase(queue);
+}
+
+std::pair<LocalThreadQueue*, std::thread::id> LocalBus::threadOf(ros::CallbackQueueInterface* queue) {
+  std::lock_guard<std::mutex> lk(threads_mutex);
+  const auto it = threads().find(queue);
+  return it == threads().end() ? std::pair<LocalThreadQueue*, std::thread::id>{nullptr, {}} : it->second;
 }
 
 std::shared_ptr<LocalTopic> LocalBus::topic(const std::string& resolved_name) {

@@ -31,6 +31,9 @@
 #include <ros/callback_queue_interface.h>
 
 #include <boost/shared_ptr.hpp>
+#include <deque>
+#include <thread>
+#include <utility>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -44,6 +47,27 @@ class LocalSink {
   virtual ~LocalSink() = default;
   /// On the sink's queue (its thread): `msg` points to a message of the sink's datatype.
   virtual void deliverLocal(const boost::shared_ptr<const void>& msg) = 0;
+};
+
+/// The deliveries a thread makes to consumers on its own queue (a LockstepQueue's thread: the
+/// torque loop's participants publish to each other): a plain FIFO the thread drains between
+/// its queue's callbacks, without the callback queue's locks and an allocation per message.
+/// Used only by its owner thread (post, drain), or while that thread is stopped (remove).
+class LocalThreadQueue {
+ public:
+  void post(LocalSink* sink, boost::shared_ptr<const void> msg) { items_.push_back({sink, std::move(msg)}); }
+  /// Delivers everything posted, also what is posted meanwhile; false if there was nothing.
+  bool drain();
+  bool empty() const { return items_.empty(); }
+  /// Drops what is pending for `sink`.
+  void remove(const LocalSink* sink);
+
+ private:
+  struct Item {
+    LocalSink* sink;
+    boost::shared_ptr<const void> msg;
+  };
+  std::deque<Item> items_;
 };
 
 /// One topic (resolved name) of this process: its local producer (if any) and direct consumers.
@@ -85,6 +109,8 @@ class LocalTopic {
     LocalSink* sink;
     std::string datatype;
     ros::CallbackQueueInterface* queue;
+    LocalThreadQueue* own_thread_queue;  // the queue's thread's FIFO (LocalBus::serveThread), or null
+    std::thread::id owner;               // that thread
   };
   std::string name_;
   mutable std::mutex m_;
@@ -97,6 +123,12 @@ class LocalTopic {
 class LocalBus {
  public:
   static std::shared_ptr<LocalTopic> topic(const std::string& resolved_name);
+  /// `queue`'s callbacks run on thread `owner`, which also drains `fifo`: a consumer on `queue`
+  /// gets what that same thread publishes through `fifo` (registered before the consumers).
+  static void serveThread(ros::CallbackQueueInterface* queue, LocalThreadQueue* fifo, std::thread::id owner);
+  static void unserveThread(ros::CallbackQueueInterface* queue);
+  /// The FIFO and owner registered for `queue` ({null, id()} if none).
+  static std::pair<LocalThreadQueue*, std::thread::id> threadOf(ros::CallbackQueueInterface* queue);
 };
 
 /// The producer's side: delivers in-process and decides whether roscpp must publish too.

@@ -30,6 +30,8 @@
 #include <string>
 #include <thread>
 
+#include "cosim/local_bus.hpp"
+
 namespace hbt::cosim {
 
 /// A callback queue + thread shared by the twin's nodelets of one `cosim/thread` name in this
@@ -68,7 +70,10 @@ class LockstepQueue {
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
     return true;
   }
-  ~LockstepQueue() { stopThread(); }
+  ~LockstepQueue() {
+    stopThread();
+    LocalBus::unserveThread(&queue_);
+  }
   /// No callback of this queue runs after this returns (the one in progress is waited for):
   /// called by a nodelet before its participant is destroyed, since a nodelet unloads from the
   /// manager's thread while the queue's thread may still be delivering to it. At shutdown only:
@@ -90,12 +95,16 @@ class LockstepQueue {
   explicit LockstepQueue(double poll_s) : thread_([this, poll_s] {
     const auto poll = std::chrono::duration<double>(poll_s);
     while (!stop_ && ros::ok()) {
+      own_.drain();  // what this thread published to its own participants (only it posts there)
       if (poll_s <= 0.0) queue_.callAvailable(ros::WallDuration(0.05));
       else if (queue_.isEmpty()) std::this_thread::sleep_for(poll);
       else queue_.callAvailable(ros::WallDuration(0));
     }
-  }) {}
+  }) {
+    LocalBus::serveThread(&queue_, &own_, thread_.get_id());  // before any participant is made
+  }
   ros::CallbackQueue queue_;
+  LocalThreadQueue own_;  // in-process deliveries from this thread to its own participants
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

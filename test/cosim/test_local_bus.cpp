@@ -3,11 +3,14 @@
 // roscpp must publish exactly when someone else listens -- a second roscpp subscriber link
 // beyond the process's own (another process, a tool), an in-process roscpp-only consumer, a
 // consumer of another type -- and that is re-checked every kRecheckPublishes publishes; a
-// consumer removed gets nothing more, not even what was queued for it.
+// consumer removed gets nothing more, not even what was queued for it. A consumer whose queue is
+// served by the publishing thread itself (LocalBus::serveThread) gets the message through that
+// thread's FIFO, not its callback queue; from any other thread, through the queue.
 #include <gtest/gtest.h>
 #include <ros/callback_queue.h>
 
 #include <boost/make_shared.hpp>
+#include <thread>
 #include <vector>
 
 #include "cosim/local_bus.hpp"
@@ -112,6 +115,34 @@ TEST(LocalBus, RemovedConsumerGetsNothingQueued) {
   EXPECT_TRUE(a.got.empty());
   EXPECT_EQ(b.got.size(), 2u);
   topic->removeConsumer(&b);
+}
+
+TEST(LocalBus, OwnThreadDeliversThroughItsFifo) {
+  ros::CallbackQueue q;
+  hbt::cosim::LocalThreadQueue fifo;
+  LocalBus::serveThread(&q, &fifo, std::this_thread::get_id());
+  auto topic = LocalBus::topic("/test_local_bus/e");
+  Sink a;
+  topic->addConsumer(&a, "pkg/A", &q);
+  LocalPublisher pub(topic, "pkg/A");
+  auto msg = boost::make_shared<const int>(7);
+  pub.deliver(msg, [] { return 1; });
+  EXPECT_TRUE(q.isEmpty());  // not through the callback queue
+  EXPECT_FALSE(fifo.empty());
+  EXPECT_TRUE(fifo.drain());
+  ASSERT_EQ(a.got.size(), 1u);
+  EXPECT_EQ(a.got[0], msg.get());
+  EXPECT_FALSE(fifo.drain());
+  std::thread other([&] { pub.deliver(msg, [] { return 1; }); });  // another thread: the queue
+  other.join();
+  EXPECT_TRUE(fifo.empty());
+  EXPECT_FALSE(q.isEmpty());
+  q.callAvailable();
+  EXPECT_EQ(a.got.size(), 2u);
+  pub.deliver(msg, [] { return 1; });
+  topic->removeConsumer(&a);  // what is pending in the FIFO goes too
+  EXPECT_TRUE(fifo.empty());
+  LocalBus::unserveThread(&q);
 }
 
 }  // namespace
