@@ -27,6 +27,22 @@ struct Sink : LocalSink {
   void deliverLocal(const boost::shared_ptr<const void>& msg) override { got.push_back(msg.get()); }
 };
 
+/// Two consumers of "pkg/A" on one queue and a producer of the topic `name`; removed at the end.
+struct TwoConsumers {
+  explicit TwoConsumers(const std::string& name) : topic(LocalBus::topic(name)) {
+    topic->addConsumer(&a, "pkg/A", &q);
+    topic->addConsumer(&b, "pkg/A", &q);
+  }
+  ~TwoConsumers() {
+    topic->removeConsumer(&a);
+    topic->removeConsumer(&b);
+  }
+  std::shared_ptr<LocalTopic> topic;
+  ros::CallbackQueue q;
+  Sink a, b;
+  LocalPublisher pub{topic, "pkg/A"};
+};
+
 TEST(LocalBus, DeliversOnEachConsumersQueue) {
   auto topic = LocalBus::topic("/test_local_bus/a");
   EXPECT_EQ(topic, LocalBus::topic("/test_local_bus/a"));  // one per name in the process
@@ -58,12 +74,8 @@ TEST(LocalBus, DeliversOnEachConsumersQueue) {
 }
 
 TEST(LocalBus, RoscppPublishesOnlyForOtherListeners) {
-  auto topic = LocalBus::topic("/test_local_bus/b");
-  ros::CallbackQueue q;
-  Sink a, b;
-  topic->addConsumer(&a, "pkg/A", &q);
-  topic->addConsumer(&b, "pkg/A", &q);
-  LocalPublisher pub(topic, "pkg/A");
+  TwoConsumers c("/test_local_bus/b");
+  auto& [topic, q, a, b, pub] = c;
   auto msg = boost::make_shared<const int>(3);
   int links = 1;  // roscpp: both in-process consumers share the process's one subscriber link
   int counted = 0;
@@ -85,8 +97,6 @@ TEST(LocalBus, RoscppPublishesOnlyForOtherListeners) {
   q.callAvailable();
   EXPECT_EQ(a.got.size(), 3u + 2 * LocalTopic::kRecheckPublishes);  // every publish, roscpp or not
   EXPECT_EQ(b.got.size(), a.got.size());
-  topic->removeConsumer(&a);
-  topic->removeConsumer(&b);
 }
 
 TEST(LocalBus, NoDirectConsumerMeansRoscppForAnySubscriber) {
@@ -99,12 +109,8 @@ TEST(LocalBus, NoDirectConsumerMeansRoscppForAnySubscriber) {
 }
 
 TEST(LocalBus, RemovedConsumerGetsNothingQueued) {
-  auto topic = LocalBus::topic("/test_local_bus/d");
-  ros::CallbackQueue q;
-  Sink a, b;
-  topic->addConsumer(&a, "pkg/A", &q);
-  topic->addConsumer(&b, "pkg/A", &q);
-  LocalPublisher pub(topic, "pkg/A");
+  TwoConsumers c("/test_local_bus/d");
+  auto& [topic, q, a, b, pub] = c;
   pub.deliver(boost::make_shared<const int>(5), [] { return 1; });
   topic->removeConsumer(&a);  // its queued delivery goes with it
   q.callAvailable();
@@ -114,7 +120,6 @@ TEST(LocalBus, RemovedConsumerGetsNothingQueued) {
   q.callAvailable();
   EXPECT_TRUE(a.got.empty());
   EXPECT_EQ(b.got.size(), 2u);
-  topic->removeConsumer(&b);
 }
 
 TEST(LocalBus, OwnThreadDeliversThroughItsFifo) {
