@@ -177,10 +177,10 @@ def _numeric_slots(cls):
     return [n for n, t in zip(cls.__slots__, cls._slot_types) if t in _PRIMITIVES]
 
 
-def _columns_fixed(u8, off, cls, layout, first):
+def _columns_fixed(buf, off, cls, layout, first):
     slots, lengths = layout
     size = len(first)
-    rows = u8[off[:, None] + np.arange(size)]  # every message's bytes, one row each
+    rows = b"".join([buf[o:o + size] for o in off.tolist()])  # every message's bytes, one after the other
     names, formats, offsets = [], [], []
     for i, at in enumerate(lengths):  # the length prefixes: equal to the first's = one layout
         names.append("len%d" % i), formats.append("<u4"), offsets.append(at)
@@ -192,7 +192,7 @@ def _columns_fixed(u8, off, cls, layout, first):
     for name in numeric:
         typ, at = slots[name]
         names.append("f_" + name), formats.append(_PRIMITIVES[typ]), offsets.append(at)
-    rec = rows.view(np.dtype({"names": names, "formats": formats, "offsets": offsets, "itemsize": size})).ravel()
+    rec = np.frombuffer(rows, np.dtype({"names": names, "formats": formats, "offsets": offsets, "itemsize": size}))
     for i, at in enumerate(lengths):
         if not np.all(rec["len%d" % i] == _U32.unpack_from(first, at)[0]):
             return None
@@ -229,7 +229,6 @@ def read_columns(path, messages_of=()):
         conns, records = _index(buf)
     except (struct.error, KeyError, IndexError) as e:
         raise Unsupported("malformed: %s" % e)
-    u8 = np.frombuffer(buf, np.uint8)
     columns, messages = {}, {}
     for c, (topic, datatype, definition) in sorted(conns.items(), key=lambda kv: kv[0]):
         off, n = records[c]
@@ -250,6 +249,6 @@ def read_columns(path, messages_of=()):
             raise Unsupported("topic %s on several connections" % topic)
         first = buf[off[0]:off[0] + n[0]]
         layout = _layout(cls, first) if np.all(n == n[0]) else None
-        cols = _columns_fixed(u8, off, cls, layout, first) if layout else None
+        cols = _columns_fixed(buf, off, cls, layout, first) if layout else None
         columns[topic] = cols if cols is not None else _columns_each(buf, off, n, cls)
     return columns, messages
