@@ -308,8 +308,9 @@ class Failures(unittest.TestCase):
         self.expect_rejected("engine_map.yaml", "cosim/macro_step_s", config=cfg)
 
     def test_bad_thread_name(self):
-        cfg = self.config_copy("cooling.yaml", lambda t: t.replace("thread: thermal", "thread: 'the rmal'", 1))
-        self.expect_rejected("cooling.yaml", "cosim/thread", config=cfg)
+        # a participant's own YAML key (the thermal nodes' thread is the scenario's: thermal_thread)
+        cfg = self.config_copy("engine_map.yaml", lambda t: t + "\ncosim:\n  thread: 'the rmal'\n")
+        self.expect_rejected("engine_map.yaml", "cosim/thread", config=cfg)
 
     def test_unknown_engine_model(self):
         """The scenario's engine model (launch argument engine, /scenario/engine_model) is map | 1d:

@@ -41,6 +41,13 @@ class LaunchArgs(unittest.TestCase):
         rc, out, _ = check("window_steps:=1e2")
         self.assertEqual((rc, out), (0, ["window_steps:=100"]))
 
+    def test_thread_names(self):
+        self.rejected("thermal_thread:=the rmal", "not a thread name")
+        self.rejected("thermal_thread:=" + "t" * 65, "not a thread name")
+        for ok in ("thermal_thread:=lockstep", "thermal_thread:=thermal", "thermal_thread:=my_2nd"):
+            rc, out, _ = check(ok)
+            self.assertEqual((rc, out), (0, [ok]))
+
     def test_architecture_that_contradicts_the_scenario(self):
         for scenario, arch, other in (("baseline_urban", "p1_48v", "hybrid_urban"),
                                       ("hybrid_urban", "conventional", "baseline_urban")):

@@ -75,6 +75,7 @@ ARGS = {
     "config": existing("dir"),
     "architecture": choice("conventional", "p1_48v"),
     "thermal": choice("true", "false"),
+    "thermal_thread": lambda v, repo, config=None: thread_name(v),  # nodelets: the thermal nodes' thread
     "hvac": choice("on", "off"),            # the hvac participant (cabin, heater, A/C); off: cooling's heater/
     "order": lambda v, repo, config=None: v,  # Gauss-Seidel groups: checked by the stepper before step 0
     "remote": lambda v, repo, config=None: remote_list(v),  # participants on another host
@@ -139,6 +140,14 @@ def host(v):
 def word(v, what):
     if not v or not all(c.isalnum() or c in "._-" for c in v):
         raise ValueError("'%s' is not %s" % (v, what))
+    return v
+
+
+def thread_name(v):
+    """A nodelet thread name as cosim/thread takes it (LockstepQueue::validThreadName: letters,
+    digits, _; at most 64 characters); empty = the scenario's default."""
+    if len(v) > 64 or not all(c.isalnum() or c == "_" for c in v):
+        raise ValueError("'%s' is not a thread name (letters, digits, _; at most 64 characters)" % v)
     return v
 
 
