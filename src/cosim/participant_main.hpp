@@ -8,12 +8,13 @@
 // manager process share callback queues, each served by one thread (LockstepQueue), named by the
 // participant's `cosim/thread` key (default "lockstep": everyone on one thread). A tight
 // exchange (the 10 ms torque loop: vehicle <-> engine, EMS, e-machine, battery) is a chain of
-// short callbacks; in one thread an intra-process publish only appends the next callback, while
-// the manager's pool moved every callback through its manager thread to a worker (two thread
-// switches per message: measured 40-57 % of the manager's CPU in the kernel's context switch).
-// A slow participant that exchanges rarely (the 0.1 s thermal nodes) can compute on a thread of
-// its own (`cosim/thread: thermal`) beside the torque loop -- stepping is data-driven, so which
-// thread runs what changes no result, only the wall time on a machine with cores to spare.
+// short callbacks; in one thread a delivery between its participants only appends to the thread's
+// own FIFO (local_bus.hpp), while the manager's pool moved every callback through its manager
+// thread to a worker (two thread switches per message: measured 40-57 % of the manager's CPU in
+// the kernel's context switch). A participant that exchanges rarely (the 0.1 s thermal nodes) can
+// compute on a thread of its own beside the torque loop (the scenario's thermal_thread,
+// urban.launch) -- stepping is data-driven, so which thread runs what changes no result, only the
+// wall time.
 #pragma once
 #include <nodelet/nodelet.h>
 #include <pluginlib/class_list_macros.hpp>

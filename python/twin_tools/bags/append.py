@@ -11,10 +11,10 @@ how to repair it."""
 import io
 import struct
 
-from twin_tools.bags.columns import BAG_MAGIC, Unsupported, header_fields, read_record
+from twin_tools.bags.columns import (BAG_MAGIC, OP_CHUNK, OP_CHUNK_INFO, OP_CONNECTION, OP_FILE_HEADER,
+                                     OP_INDEX_DATA, OP_MESSAGE, Unsupported, header_fields, read_record)
 
 _FILE_HEADER_AT = len(BAG_MAGIC)
-_OP_MESSAGE, _OP_INDEX_DATA, _OP_CHUNK, _OP_CHUNK_INFO, _OP_CONNECTION = b"\x02", b"\x04", b"\x05", b"\x06", b"\x07"
 
 
 def _u32(v):
@@ -71,23 +71,23 @@ def append_at_end(path, topic, msg):
         known = conns.get(topic)
         new_conn = known is None or known[1] != msg._md5sum.encode()
         conn_id = n_conns if new_conn else known[0]
-        conn_record = _record([("conn", _u32(conn_id)), ("op", _OP_CONNECTION), ("topic", topic.encode())],
+        conn_record = _record([("conn", _u32(conn_id)), ("op", bytes([OP_CONNECTION])), ("topic", topic.encode())],
                               _header([("topic", topic.encode()), ("type", msg._type.encode()),
                                        ("md5sum", msg._md5sum.encode()),
                                        ("message_definition", msg._full_text.encode())]))
         chunk_data = conn_record if new_conn else b""
         msg_offset = len(chunk_data)
-        chunk_data += _record([("conn", _u32(conn_id)), ("op", _OP_MESSAGE), ("time", t)], buf.getvalue())
-        chunk = _record([("compression", b"none"), ("op", _OP_CHUNK), ("size", _u32(len(chunk_data)))], chunk_data)
-        index = _record([("conn", _u32(conn_id)), ("count", _u32(1)), ("op", _OP_INDEX_DATA), ("ver", _u32(1))],
+        chunk_data += _record([("conn", _u32(conn_id)), ("op", bytes([OP_MESSAGE])), ("time", t)], buf.getvalue())
+        chunk = _record([("compression", b"none"), ("op", bytes([OP_CHUNK])), ("size", _u32(len(chunk_data)))], chunk_data)
+        index = _record([("conn", _u32(conn_id)), ("count", _u32(1)), ("op", bytes([OP_INDEX_DATA])), ("ver", _u32(1))],
                         t + _u32(msg_offset))
         info = _record([("chunk_pos", struct.pack("<Q", index_pos)), ("count", _u32(1)), ("end_time", t),
-                        ("op", _OP_CHUNK_INFO), ("start_time", t), ("ver", _u32(1))], _u32(conn_id) + _u32(1))
+                        ("op", bytes([OP_CHUNK_INFO])), ("start_time", t), ("ver", _u32(1))], _u32(conn_id) + _u32(1))
         f.seek(index_pos)
         f.write(chunk + index + conn_records + (conn_record if new_conn else b"") + chunk_infos + info)
         f.truncate()
         # the file header: the new index position and counts (fixed-size fields: same length)
         fields = [("chunk_count", _u32(n_chunks + 1)), ("conn_count", _u32(n_conns + new_conn)),
-                  ("index_pos", struct.pack("<Q", index_pos + len(chunk) + len(index))), ("op", b"\x03")]
+                  ("index_pos", struct.pack("<Q", index_pos + len(chunk) + len(index))), ("op", bytes([OP_FILE_HEADER]))]
         f.seek(_FILE_HEADER_AT + 4)
         f.write(_header(fields))

@@ -21,11 +21,12 @@ import struct
 import numpy as np
 
 BAG_MAGIC = b"#ROSBAG V2.0\n"
-_OP_MESSAGE, _OP_FILE_HEADER, _OP_CHUNK, _OP_CHUNK_INFO, _OP_CONNECTION = 2, 3, 5, 6, 7
+# the record op codes of format 2.0 (every record's "op" field, one byte)
+OP_MESSAGE, OP_FILE_HEADER, OP_INDEX_DATA, OP_CHUNK, OP_CHUNK_INFO, OP_CONNECTION = 2, 3, 4, 5, 6, 7
 # A message data record as rosbag writes it: the header fields in name order (conn, op, time) at
 # fixed places, then the data length: <hlen 38><9>conn=<u32><4>op=<0x02><13>time=<sec><nsec><len>.
 _MSG_RECORD = struct.Struct("<I9sI7sB9sIII")
-_MSG_TAGS = (38, b"\x09\x00\x00\x00conn=", b"\x04\x00\x00\x00op=", _OP_MESSAGE, b"\x0d\x00\x00\x00time=")
+_MSG_TAGS = (38, b"\x09\x00\x00\x00conn=", b"\x04\x00\x00\x00op=", OP_MESSAGE, b"\x0d\x00\x00\x00time=")
 
 # ROS primitive types: numpy dtype (little-endian)
 _PRIMITIVES = {"bool": "u1", "int8": "i1", "byte": "i1", "uint8": "u1", "char": "u1", "int16": "<i2",
@@ -68,7 +69,7 @@ def _index(buf):
     if buf[:len(BAG_MAGIC)] != BAG_MAGIC:
         raise Unsupported("not a format 2.0 bag")
     head, _, _, _ = read_record(buf, len(BAG_MAGIC))
-    if head.get("op") != bytes([_OP_FILE_HEADER]):
+    if head.get("op") != bytes([OP_FILE_HEADER]):
         raise Unsupported("no file header")
     index_pos = struct.unpack("<Q", head["index_pos"])[0]
     if index_pos == 0:
@@ -76,19 +77,19 @@ def _index(buf):
     conns, chunks, pos = {}, [], index_pos
     for _ in range(_u32(head, "conn_count")):
         f, start, dlen, pos = read_record(buf, pos)
-        if f.get("op") != bytes([_OP_CONNECTION]):
+        if f.get("op") != bytes([OP_CONNECTION]):
             raise Unsupported("connection record expected")
         c = header_fields(buf, start, start + dlen)
         conns[_u32(f, "conn")] = (f["topic"].decode(), c["type"].decode(), c["message_definition"].decode())
     for _ in range(_u32(head, "chunk_count")):
         f, _, _, pos = read_record(buf, pos)
-        if f.get("op") != bytes([_OP_CHUNK_INFO]):
+        if f.get("op") != bytes([OP_CHUNK_INFO]):
             raise Unsupported("chunk info record expected")
         chunks.append(struct.unpack("<Q", f["chunk_pos"])[0])
     records = {c: ([], [], []) for c in conns}
     for chunk_pos in sorted(chunks):
         f, start, dlen, _ = read_record(buf, chunk_pos)
-        if f.get("op") != bytes([_OP_CHUNK]) or f.get("compression") != b"none":
+        if f.get("op") != bytes([OP_CHUNK]) or f.get("compression") != b"none":
             raise Unsupported("compressed chunk")
         pos, end = start, start + dlen
         while pos < end:
@@ -101,7 +102,7 @@ def _index(buf):
                 pos += _MSG_RECORD.size + h[8]
                 continue
             f, start_r, n, nxt = read_record(buf, pos)
-            if f.get("op") == bytes([_OP_MESSAGE]):  # fields in another order: still a message
+            if f.get("op") == bytes([OP_MESSAGE]):  # fields in another order: still a message
                 r = records[_u32(f, "conn")]
                 sec, nsec = struct.unpack("<II", f["time"])
                 r[0].append(sec * 1000000000 + nsec)
