@@ -11,6 +11,8 @@ namespace {
 // windmilling, no work in the map): dT = T0 (pr^k - 1) / eta ~ 0.
 constexpr double kNoTemperatureRiseEfficiency = 1e3;
 constexpr int kPsiPoints = 2001;
+// Lowest pressure ratio of the compressor grid [-] (deep choke / throttling of a slow wheel).
+constexpr double kPrLow = 0.3;
 }
 
 CompressorFlowMap::CompressorFlowMap(const turbo::Compressor& c, int n_speed, int n_pr)
@@ -21,12 +23,20 @@ CompressorFlowMap::CompressorFlowMap(const turbo::Compressor& c, int n_speed, in
     for (double pr : l.pr) pr_top = std::max(pr_top, pr);
   }
   n_max_ = 1.3 * n_top;
-  const double pr_max = 1.3 * pr_top;
+  // PI = 1 is a grid node: the stationary or slow wheel's flow has a kink there (orifice flow
+  // K sqrt(1 - PI) below, no forward flow against a pressure rise above), which a cell spanning
+  // PI = 1 would smear into a forward flow at PI > 1 (at N = 0: 18 g/s at PI = 1, 1.4 g/s at
+  // PI = 1.0115, where the map gives 0). The grid spans [pr_lo, pr_lo + (n_pr - 1) dpr] with
+  // pr_lo <= kPrLow and the top >= 1.3 x the highest measured PI.
+  const double dpr = (1.3 * pr_top - kPrLow) / (n_pr - 1);
+  const double pr_lo = 1.0 - std::ceil((1.0 - kPrLow) / dpr) * dpr;
+  const double pr_hi = pr_lo + (n_pr - 1) * dpr;
   const turbo::CompressorMap& m = c.map();
-  flow_ = Grid2D(0.0, n_max_, n_speed, 0.3, pr_max, n_pr,
-                 [&](double n, double pr) { return m.atPressureRatio(n, pr).flow_kg_s; });
-  work_ = Grid2D(0.0, n_max_, n_speed, 0.3, pr_max, n_pr,
-                 [&](double n, double pr) { return m.atPressureRatio(n, pr).work; });
+  const auto node = [](double pr) { return std::fabs(pr - 1.0) < 1e-9 ? 1.0 : pr; };  // exact 1
+  flow_ = Grid2D(0.0, n_max_, n_speed, pr_lo, pr_hi, n_pr,
+                 [&](double n, double pr) { return m.atPressureRatio(n, node(pr)).flow_kg_s; });
+  work_ = Grid2D(0.0, n_max_, n_speed, pr_lo, pr_hi, n_pr,
+                 [&](double n, double pr) { return m.atPressureRatio(n, node(pr)).work; });
 }
 
 double CompressorFlowMap::massFlow(double p0, double T0, double p_down, double w) const {

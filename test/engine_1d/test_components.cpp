@@ -37,6 +37,31 @@ TEST(Engine1DComponents, TabulatedCompressorMatchesDirectLookup) {
   EXPECT_LT(worst, 0.02);
 }
 
+// Around PI = 1 the stationary wheel's flow has a kink: the orifice flow K sqrt(1 - PI) of the
+// throttling wheel below, no forward flow against a pressure rise above (compressor_map.hpp).
+// The grid must not turn the stopped turbocharger into a pump (a PI = 1 node): at N = 0 the
+// tabulated flow is 0 wherever the map's is (PI > 1), and below PI = 1 it stays under the map's
+// orifice law (a chord of the concave sqrt): within 2 % of it down to PI = 0.9, 12 % in the two
+// grid cells next to PI = 1 (1.6 % of PI wide, where sqrt(1 - PI) is steepest). (Between N = 0 and the first
+// speed node, 1.3 krpm, the slow wheel's kink is interpolated linearly in N: a spinning-down
+// wheel passes through it in a fraction of a second.)
+TEST(Engine1DComponents, TabulatedCompressorPassesNoFlowAgainstAPressureRiseAtRest) {
+  const auto& c = turbo().compressor;
+  CompressorFlowMap m(c);
+  const double p1 = 1e5, T1 = c.tRef();  // corrected = actual
+  for (double pr : {1.0, 1.001, 1.005, 1.0115, 1.02, 1.05}) {
+    const double direct = c.map().atPressureRatio(0.0, pr).flow_kg_s * p1 / c.pRef();
+    ASSERT_NEAR(direct, 0.0, 1e-12) << "PR " << pr;  // the map's own law (premise)
+    EXPECT_NEAR(m.massFlow(p1, T1, pr * p1, 0.0), 0.0, 1e-12) << "PR " << pr;
+  }
+  for (double pr : {0.5, 0.8, 0.9, 0.95, 0.98}) {
+    const double direct = c.map().atPressureRatio(0.0, pr).flow_kg_s * p1 / c.pRef();
+    const double tab = m.massFlow(p1, T1, pr * p1, 0.0);
+    EXPECT_LE(tab, direct * (1.0 + 1e-9)) << "PR " << pr;
+    EXPECT_NEAR(tab, direct, (pr <= 0.9 ? 0.02 : 0.12) * direct) << "PR " << pr;
+  }
+}
+
 TEST(Engine1DComponents, TabulatedTurbineAndWastegateMatchDirectLookup) {
   const auto& t = turbo().turbine;
   TurbineFlowMap e0(t.entry(0), &t.wastegate());
