@@ -131,6 +131,10 @@ void Engine1DConfig::declare(ParamSet& ps) {
          "longest window of the published cycle means (a cycle slower than this: the last S seconds)");
   ps.add("numerics/coupling_cylinder_cfl_slow", coupling_cylinder_cfl_slow, "-", 0.01, 2.0,
          "coupling_cylinder_cfl below the slow-crank speed 720 deg / cycle_window_max_s");
+  ps.add("numerics/rest_hold_after_s", rest_hold_after_s, "s", 0.0, 60.0,
+         "the gas state is held once the crank has stood this long (0: never)");
+  ps.add("numerics/rest_hold_flow_kg_s", rest_hold_flow_kg_s, "kg/s", 0.0, 0.1,
+         "largest mean air / exhaust flow at which the gas at rest is held");
   ps.add("numerics/initial_turbo_speed_rpm", initial_turbo_speed_rpm, "rpm", 0.0, 2e5,
          "turbo speed at reset (scaled with the requested load)");
   ps.add("calibration/woschni_multiplier", woschni_multiplier, "-", 0.0, 3.0,

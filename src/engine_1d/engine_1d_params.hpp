@@ -94,6 +94,9 @@ struct Engine1DConfig {
   double nox_interval_deg = 0.0;         // > 0 overrides cylinder/nox/interval_deg
   double cycle_window_max_s = 0.3;       // longest window of the cycle means [s] (slow crank)
   double coupling_cylinder_cfl_slow = 0.5;  // the cylinder limit's cfl on a slow crank
+  double rest_hold_after_s = 0.0;        // > 0: the gas at rest is held after the crank has stood
+                                         // this long [s] (engine_assembly.hpp "Held rest"); 0: off
+  double rest_hold_flow_kg_s = 0.0;      // ... and while the mean air and exhaust flows are below [kg/s]
   /// Below this crank speed a 720 deg cycle takes longer than cycle_window_max_s [rad/s].
   double slowCrank_rad_s() const { return 4.0 * units::kPi / cycle_window_max_s; }
   double friction_heat_to_oil_fraction = 0.5;  // share of the friction work carried by the oil (common/friction_heat.hpp)

@@ -196,6 +196,11 @@ void EngineAssembly::advance(double interval, double omega) {
   interval_.duration_s = interval;
   fric_torque_ = 0.0;
   for (const auto& s : cyl_) fric_torque_ += s.cyl->frictionTorque_Nm(omega);
+  if (omega > 0.0) standing_s_ = 0.0;
+  if (holdsRest(omega)) {
+    holdRest(interval);
+    return;
+  }
   double remaining = interval;
   while (remaining > 0.0) {
     const double dtmax = stableDt(omega);
@@ -210,12 +215,47 @@ void EngineAssembly::advance(double interval, double omega) {
     coupledStep(dt, omega);
     remaining = n <= 1.0 ? 0.0 : remaining - dt;
   }
+  if (omega == 0.0) standing_s_ += interval;
   CycleMeans m;
   cycleMeans(m);
   for (int b = 0; b < 2; ++b) {
     const double out = m[kBankOut0 + b];
     if (out > 0.0) xb_bank_[b] = m[kBankBurned0 + b] / out;
   }
+}
+
+bool EngineAssembly::holdsRest(double omega) {
+  const Engine1DConfig& E = P_.engine;
+  if (omega > 0.0 || !(E.rest_hold_after_s > 0.0)) return held_ = false;
+  if (held_) {
+    if (std::fabs(filter_->p() - held_filter_p_) <= kHoldPressureTol_Pa &&
+        std::fabs(back_->p() - held_back_p_) <= kHoldPressureTol_Pa)
+      return true;
+    held_ = false;  // a boundary moved: the gas flows again and relaxes anew
+    standing_s_ = 0.0;
+    return false;
+  }
+  if (standing_s_ < E.rest_hold_after_s) return false;
+  CycleMeans m;
+  cycleMeans(m);
+  if (!(std::fabs(m[kAir]) < E.rest_hold_flow_kg_s && std::fabs(m[kExhOut]) < E.rest_hold_flow_kg_s))
+    return false;
+  held_filter_p_ = filter_->p();
+  held_back_p_ = back_->p();
+  return held_ = true;
+}
+
+// The held gas over the interval: no gas is stepped; the turbocharger coasts on its bearing
+// friction alone (no flow: no turbine or compressor power); the window gets the standing state
+// (zero flows, fuel, wall heat and NOx; the gas torque at the standing angle; the friction torque).
+void EngineAssembly::holdRest(double interval) {
+  shaft_.step(interval, 0.0, 0.0);
+  std::array<double, kNumChannels> x{};
+  x[kIndTorque] = gasTorque_Nm();
+  x[kFricTorque] = fric_torque_;
+  gasStateChannels(x);
+  window_.add(interval, 0.0, x);
+  t_ += interval;
 }
 
 double EngineAssembly::gasTorque_Nm() const {
@@ -433,17 +473,21 @@ void EngineAssembly::recordStep(const StepSums& sums, double dt, double omega,
   x[kAir] = comp_->massFlow();
   x[kExhOut] = -back_end_->massFlowIn();
   x[kExhEnth] = -down_pipe_->endFlux(End::Right).energy_in;
-  x[kBoost] = plenum_->p();
-  x[kImT] = plenum_->T();
-  const int n0 = turb_pipe_[0]->cells() - 1, n1 = turb_pipe_[1]->cells() - 1;
-  x[kP3] = 0.5 * (turb_pipe_[0]->p(n0) + turb_pipe_[1]->p(n1));
-  x[kT3] = 0.5 * (turb_pipe_[0]->T(n0) + turb_pipe_[1]->T(n1));
+  gasStateChannels(x);
   // fuel injected, wall heat and NOx of this step as rates over the step (the window splits a
   // step over its bins by crank angle; impulses at the step end would phase-lock with the bins)
   x[kFuel] = sums.fuel_kg / dt;
   x[kWallHeat] = sums.wall_J / dt;
   x[kNox] = sums.nox_kg / dt;
   window_.add(dt, omega * dt / kRad_per_deg, x);
+}
+
+void EngineAssembly::gasStateChannels(std::array<double, kNumChannels>& x) const {
+  x[kBoost] = plenum_->p();
+  x[kImT] = plenum_->T();
+  const int n0 = turb_pipe_[0]->cells() - 1, n1 = turb_pipe_[1]->cells() - 1;
+  x[kP3] = 0.5 * (turb_pipe_[0]->p(n0) + turb_pipe_[1]->p(n1));
+  x[kT3] = 0.5 * (turb_pipe_[0]->T(n0) + turb_pipe_[1]->T(n1));
 }
 
 }  // namespace hbt::engine_1d

@@ -40,6 +40,16 @@
 // in time and T_ind is the instantaneous gas torque sum_k p_k dV_k/dtheta (the limit of
 // dW/(omega dt)). Per advance() the work of the interval (lastInterval()): the crank's energy
 // exchange with the engine, W_ind - W_f = integral (T_ind - T_f) omega dt.
+// Held rest (numerics/rest_hold_after_s, rest_hold_flow_kg_s): once the crank has stood for
+// rest_hold_after_s and the cycle-mean air and exhaust flows are below rest_hold_flow_kg_s, the
+// gas has reached the model's own steady state at rest (no piston motion; Woschni's and the
+// pipes' Reynolds-analogy wall heat vanish at zero velocity; trapped gas keeps p and T) up to
+// the explicit valve coupling's limit cycle (README "Stop and restart"). advance() then holds
+// every gas state instead of stepping it: no coupled steps, the window records zero flows and
+// the standing gas torque; the turbocharger coasts down on its bearing friction (a coasting
+// wheel with no flow does no work). The hold ends when the crank moves or
+// a boundary pressure (air-filter box, back pressure) moves by more than kHoldPressureTol_Pa
+// from its value at the start of the hold; the gas then relaxes again for rest_hold_after_s.
 #pragma once
 #include "common/units.hpp"
 #include <array>
@@ -102,6 +112,13 @@ class EngineAssembly {
     double indicated_J = 0.0, friction_J = 0.0, duration_s = 0.0;
   };
   const Interval& lastInterval() const { return interval_; }
+  /// True while the gas at rest is held (header "Held rest"; the last advance() took no step).
+  bool restHeld() const { return held_; }
+  /// Boundary pressure change that ends a held rest [Pa] (header "Held rest"): 0.1 % of an
+  /// atmosphere. The back pressure the aftertreatment returns moves with the engine's own
+  /// residual flow (its bricks' laminar drop, 2-10 Pa at 0.1-0.5 g/s): the hold's zero flow must
+  /// not end it; a change of 100 Pa moves the held gas states by < 0.1 %.
+  static constexpr double kHoldPressureTol_Pa = 100.0;
   /// Instantaneous indicated (gas) torque sum_k p_k dV_k/dtheta at the present crank angle [Nm].
   double gasTorque_Nm() const;
   /// Largest coupled step [s] at omega [rad/s] from the current state; `limiter` (if given,
@@ -179,6 +196,9 @@ class EngineAssembly {
   void stepTurboShaft(double dt);
   void accumulateTotals(const StepSums& sums, double dt, double omega);
   void recordStep(const StepSums& sums, double dt, double omega, std::array<double, kNumChannels>& x);
+  void gasStateChannels(std::array<double, kNumChannels>& x) const;  // boost, T_im, p3, T3
+  bool holdsRest(double omega);  // header "Held rest": starts, keeps or ends the hold
+  void holdRest(double interval);
 
   Engine1DParams P_;
   const turbo::Turbocharger& tc_;
@@ -204,6 +224,9 @@ class EngineAssembly {
   double substep_deg_ = 2.0;       // cylinder sub-step, valves closed (IVC..EVO) [deg crank]
   double substep_open_deg_ = 2.0;  // cylinder sub-step, a valve open [deg crank]
   long steps_ = 0;
+  double standing_s_ = 0.0;  // time the crank has stood (omega = 0) before this advance() [s]
+  bool held_ = false;        // the gas at rest is held (header "Held rest")
+  double held_filter_p_ = 0.0, held_back_p_ = 0.0;  // boundary pressures at the hold's start [Pa]
 };
 
 }  // namespace hbt::engine_1d
