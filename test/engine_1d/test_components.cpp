@@ -42,9 +42,9 @@ TEST(Engine1DComponents, TabulatedCompressorMatchesDirectLookup) {
 // The grid must not turn the stopped turbocharger into a pump (a PI = 1 node): at N = 0 the
 // tabulated flow is 0 wherever the map's is (PI > 1), and below PI = 1 it stays under the map's
 // orifice law (a chord of the concave sqrt): within 2 % of it down to PI = 0.9, 12 % in the two
-// grid cells next to PI = 1 (1.6 % of PI wide, where sqrt(1 - PI) is steepest). (Between N = 0 and the first
-// speed node, 1.3 krpm, the slow wheel's kink is interpolated linearly in N: a spinning-down
-// wheel passes through it in a fraction of a second.)
+// grid cells next to PI = 1 (1.6 % of PI wide, where sqrt(1 - PI) is steepest). (Between N = 0
+// and the first speed node, 1.3 krpm, the slow wheel's kink is interpolated linearly in N: a
+// spinning-down wheel passes through it in a fraction of a second.)
 TEST(Engine1DComponents, TabulatedCompressorPassesNoFlowAgainstAPressureRiseAtRest) {
   const auto& c = turbo().compressor;
   CompressorFlowMap m(c);
