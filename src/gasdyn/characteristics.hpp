@@ -200,31 +200,46 @@ FaceState demandInflowFace(const PerfectGas& gas, const EndState& s, Demand dema
 // --- Warm-started variants for boundaries evaluated every time step ---------------------------
 // Same equations and root semantics as demandOutflowFace / demandInflowFace (f increasing on
 // [0, hi]: f(0) >= 0 -> no flow, f(hi) <= 0 -> sonic face, else the root). The face state changes
-// little from one step to the next, so a secant iteration starts from the previous step's root
-// and residual slope (WarmStart, kept by the caller): x0 = the last root, x1 = x0 - f(x0)/slope
-// (a Newton step with the last slope; without one, x0 -/+ 2 %), then secant steps until
+// little from one step to the next, so a secant iteration starts from the roots of the last two
+// steps and the last residual slope (WarmStart, kept by the caller): x0 = 2 x_last - x_before
+// (the linear extrapolation, when it lies in (0, hi); else x_last), x1 = x0 - f(x0)/slope (a
+// Newton step with the last slope; without one, x0 -/+ 2 %), then secant steps until
 // |dx| <= kWarmTolerance hi (a Newton step with the last slope that is already that small ends
-// it). Evaluations per call (first 100 s of the WHTC): compressor and charge-air cooler faces
-// 2.3-3, turbine 3.8, cylinder valves 5.5-7 (their flows change by 10-50 % per step at
-// blow-down and closing); a fixed 2 % second point at 1e-9 hi takes 4-9.4.
+// it). Evaluations per call over the first 300 s of the WHTC, all faces: 3.64 (4.43 from the last
+// root at a 1e-7 tolerance); the cylinder valves take the most (their flows change by 10-50 % per
+// step at blow-down and closing).
 // Every evaluated point narrows a bracket; if the secant leaves it (or needs more than
 // kWarmSecantSteps steps) the missing end values are evaluated and the Illinois solver finishes
 // on that bracket (same tolerance). The residual slope of the last secant step is kept.
-/// Warm start of a face solve: the last root x [m/s] (<= 0: none) and the residual's slope
-/// df/dx there [kg/s per m/s] (<= 0: unknown).
+/// Warm start of a face solve: the last root x [m/s] (<= 0: none), the root before it
+/// x_before [m/s] (<= 0: none) and the residual's slope df/dx [kg/s per m/s] (<= 0: unknown).
 struct WarmStart {
-  double x = 0.0, slope = 0.0;
+  double x = 0.0, x_before = 0.0, slope = 0.0;
+  void setRoot(double root) {  // the new root; the last one becomes the one before
+    x_before = x;
+    x = root;
+  }
+  /// First point of the next solve on (0, hi): the linear extrapolation of the last two roots
+  /// if both exist and it lies inside, else the last root.
+  double guess(double hi) const {
+    if (x > 0.0 && x_before > 0.0) {
+      const double g = 2.0 * x - x_before;
+      if (g > 0.0 && g < hi) return g;
+    }
+    return x;
+  }
 };
 
 namespace detail {
 constexpr int kWarmSecantSteps = 8;
-/// Root tolerance relative to the sonic bound: 1e-7 hi (3e-5 m/s at a 300 m/s bound), far below
-/// the faces' discretisation error; mass is conserved exactly whatever the root's error (both
-/// sides take the flux of the face state).
-constexpr double kWarmTolerance = 1e-7;
+/// Root tolerance relative to the sonic bound: 1e-6 hi (0.3 mm/s at a 300 m/s bound, 1e-5 of a
+/// 30 m/s port flow), far below the faces' discretisation error; mass is conserved exactly
+/// whatever the root's error (both sides take the flux of the face state). Against 1e-7 the
+/// WHTC's fuel, NOx and regression are unchanged to the printed digits (engine_1d SPEED.md).
+constexpr double kWarmTolerance = 1e-6;
 template <class F>
 double warmRoot(F f, double hi, WarmStart& ws) {
-  const double tol = kWarmTolerance * hi, guess = ws.x;
+  const double tol = kWarmTolerance * hi, guess = ws.guess(hi);
   double a = 0.0, b = hi, fa = 0.0, fb = 0.0;
   bool has_a = false, has_b = false;
   auto take = [&](double x, double fx) {
@@ -277,7 +292,7 @@ FaceState warmDemandOutflowFace(const PerfectGas& gas, const EndState& s, Demand
     x = wsonic;
   else
     x = detail::warmRoot(f, wsonic, ws);
-  ws.x = x;
+  ws.setRoot(x);
   return w.outflow(x);
 }
 
@@ -298,12 +313,13 @@ FaceState warmDemandInflowFace(const PerfectGas& gas, const EndState& s, Demand 
     if (ws.x < us) {
       const double x = detail::warmRoot(f, us, ws);
       if (x > 0.0 && x < us) {
-        ws.x = x;
+        ws.setRoot(x);
         return w.inflow(gas, x, detail::inflowDemand(demand, w, x).T0);
       }
     }
   }
   const FaceState fs = demandInflowFace(gas, s, demand);
+  ws.x_before = 0.0;  // a cold solve: no trend to extrapolate
   ws.x = fs.u_in;
   return fs;
 }
@@ -320,7 +336,7 @@ inline FaceState warmInflowMassFlowFace(const PerfectGas& gas, const EndState& s
   const double us = std::sqrt(2.0 * gas.gamma * gas.R * T0_in / (gas.gamma + 1.0));
   auto f = [&](double ub) { return w.inflow(gas, ub, T0_in).mdot_in(w.A) - mdot_in; };
   const double x = detail::warmRoot(f, us, ws);  // f(0) = -mdot_in < 0
-  ws.x = x;
+  ws.setRoot(x);
   return w.inflow(gas, x, T0_in);
 }
 
