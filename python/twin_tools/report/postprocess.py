@@ -388,7 +388,7 @@ def report_from_bag(bag, out, baseline=None):
         s["data_until_s"] = until_s
     for line in gaps:
         print("twin: report: %s: %s" % (bag, line), file=sys.stderr)
-    nodes = diagnostics.read_diagnostics(bag)
+    nodes = diagnostics.read_diagnostics(bag, participants=list(status.get("compute_time_s", {})))
     warnings = diagnostics.warnings_list(nodes) if nodes is not None else None
     if warnings is not None:
         s["warnings"] = warnings
