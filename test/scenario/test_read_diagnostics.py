@@ -103,6 +103,11 @@ class ReadDiagnostics(unittest.TestCase):
         self.assertEqual({n: (st["final"], st["t"]) for n, st in nodes.items()},
                          {"a": (False, END_S), "b": (False, END_S)})
 
+    def test_an_empty_diagnostics_bag_gives_no_node(self):
+        rosbag.Bag(os.path.join(self.tmp, diagnostics.DIAGNOSTICS_BAG), "w").close()
+        self.assertEqual(self.read(["a"])[0], {})
+        self.assertEqual(self.read(None)[0], {})
+
     def test_no_diagnostics_bag_is_none(self):
         self.assertIsNone(diagnostics.read_diagnostics(self.run_bag, participants=["a"]))
 

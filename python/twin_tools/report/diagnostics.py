@@ -34,9 +34,10 @@ def read_diagnostics(run_bag, participants=None):
     with open_bag(path) as bag:
         if participants:
             import genpy
+            import rosbag
             try:
                 start = genpy.Time.from_sec(max(0.0, bag.get_end_time() - TAIL_S))
-            except Exception:  # no message at all: nothing to read
+            except rosbag.ROSBagException:  # "Bag contains no message": nothing to read
                 return {}
             nodes = _latest(bag.read_messages(topics=[DIAGNOSTICS_TOPIC], start_time=start))
             if set(participants) <= set(nodes) and all(st["final"] for st in nodes.values()):
