@@ -121,6 +121,11 @@ void Engine1DConfig::declare(ParamSet& ps) {
          "valve areas at the mid crank angle of the coupled step (else at its start)");
   ps.add("numerics/implicit_volumes", implicit_volumes,
          "open ends to finite volumes linearised-implicit in the volume pressure");
+  ps.add("numerics/implicit_one_cell_pipes", implicit_one_cell_pipes,
+         "one-cell pipes at those open ends implicit in their cell pressure too");
+  ps.add("numerics/subcycle_coupling_cfl", subcycle_coupling_cfl, "-", 0.0, 2.0,
+         "> 0: pipes of >= 2 FSM cells take their own CFL sub-steps; their end cells limit the "
+         "coupled step to this x dx/(|u| + c)");
   ps.add("numerics/cylinder_substep_deg", cylinder_substep_deg, "deg", 0.0, 10.0,
          "> 0 overrides cylinder/numerics/max_substep_deg");
   ps.add("numerics/cylinder_substep_open_deg", cylinder_substep_open_deg, "deg", 0.0, 10.0,

@@ -89,6 +89,8 @@ struct Engine1DConfig {
                                          // cylinder-as-reservoir coupling limit)
   bool valve_area_midstep = false;       // valve areas at the coupled step's mid crank angle
   bool implicit_volumes = false;         // open ends to plenum/collectors implicit (gasdyn)
+  bool implicit_one_cell_pipes = false;  // + the one-cell pipes at those ends (gasdyn volume.hpp)
+  double subcycle_coupling_cfl = 0.0;    // > 0: pipes of >= 2 FSM cells sub-cycled (gasdyn pipe.hpp)
   double cylinder_substep_deg = 0.0;     // > 0 overrides cylinder/numerics/max_substep_deg
   double cylinder_substep_open_deg = 0.0;  // sub-step while a valve is open (EVO..IVC), if larger
   double nox_interval_deg = 0.0;         // > 0 overrides cylinder/nox/interval_deg

@@ -89,6 +89,10 @@ void EngineAssembly::build(const Initial& in) {
   T_amb_ = in.T_amb;
   intake_.setImplicitVolumes(E.implicit_volumes);
   exhaust_.setImplicitVolumes(E.implicit_volumes);
+  intake_.setImplicitOneCellPipes(E.implicit_one_cell_pipes);
+  exhaust_.setImplicitOneCellPipes(E.implicit_one_cell_pipes);
+  intake_.setSubcycledPipes(E.subcycle_coupling_cfl);
+  exhaust_.setSubcycledPipes(E.subcycle_coupling_cfl);
 
   // --- intake network ---
   filter_ = &intake_.addReservoir("air_filter_box", in.p_amb, in.T_amb);

@@ -52,7 +52,16 @@ void OpenEnd::computeFluxes(double) {
     port_.dmdot_dp = d.dmdot;
     port_.dmomentum_dp = d.dmomentum;
     port_.denergy_dp = d.denergy;
+    if (end_.pipe->implicitCell()) cellSensitivity(s, p0, T0, f);
   }
+}
+
+// d flux / d p_c of the end cell (isentropic change; characteristics.hpp).
+void OpenEnd::cellSensitivity(const EndState& s, double p0, double T0, const FaceState& f) {
+  const FaceSensitivity d = reservoirFaceCellSensitivity(end_.pipe->gas(), s, p0, T0, f);
+  port_.dmdot_dpc = d.dmdot;
+  port_.dmomentum_dpc = d.dmomentum;
+  port_.denergy_dpc = d.denergy;
 }
 
 Valve::Valve(std::string name, Volume& volume, PipeEnd end,

@@ -41,6 +41,7 @@ class OpenEnd final : public Boundary {
   double massFlowIn() const { return vol_.isReservoir() ? mdot_ : port_.flux.mdot_in; }
 
  private:
+  void cellSensitivity(const EndState& s, double p0, double T0, const FaceState& f);
   PipeEnd end_;
   Volume& vol_;
   VolumePort port_;  // finite volumes only

@@ -12,6 +12,19 @@ FaceState inflowFace(const PerfectGas& gas, const Wave& w, double ub, double T0)
   return w.inflow(gas, ub, T0);
 }
 FaceState outflowFace(const Wave& w, double wout) { return w.outflow(wout); }
+
+// Flux derivatives [kg/(s x)], [m^2 Pa/x], [W/x] from the face state's (du, drho, dp) per unit x
+// of some parameter x (faceFlux: mdot = rho u A, momentum = A (p + rho u^2), energy = mdot h0).
+FaceSensitivity faceFluxDerivative(const PerfectGas& gas, const FaceState& f, double A,
+                                   double du, double drho, double dp) {
+  const double rho = f.rho, u = f.u_in, pb = f.p;
+  const double mdot = rho * u * A;
+  const double dm = A * (u * drho + rho * du);
+  const double k = gas.gamma / (gas.gamma - 1.0);
+  const double h0 = k * pb / rho + 0.5 * u * u;
+  const double dh0 = k * (dp / rho - pb * drho / (rho * rho)) + u * du;
+  return {dm, A * (dp + u * u * drho + 2.0 * rho * u * du), h0 * dm + mdot * dh0};
+}
 }  // namespace
 
 double closedFacePressure(const PerfectGas& g, const EndState& s) {
@@ -76,12 +89,38 @@ FaceSensitivity reservoirFaceSensitivity(const PerfectGas& gas, const EndState& 
       dp = pb / p0 - rho * u * du;
     }
   }
-  const double mdot = rho * u * A;
-  const double dm = A * (u * drho + rho * du);
-  const double k = gas.gamma / (gas.gamma - 1.0);
-  const double h0 = k * pb / rho + 0.5 * u * u;
-  const double dh0 = k * (dp / rho - pb * drho / (rho * rho)) + u * du;
-  return {dm, A * (dp + u * u * drho + 2.0 * rho * u * du), h0 * dm + mdot * dh0};
+  return faceFluxDerivative(gas, f, A, du, drho, dp);
+}
+
+FaceSensitivity reservoirFaceCellSensitivity(const PerfectGas& gas, const EndState& s,
+                                             double p0, double T0, const FaceState& f) {
+  const Wave w(gas, s);
+  const double rho = f.rho, u = f.u_in, pb = f.p;
+  const double c2 = gas.gamma * pb / rho, cb = std::sqrt(c2);
+  double du, drho, dp;
+  if (u <= 0.0) {
+    if (-u >= cb * (1.0 - 1e-12)) {  // choked outflow: u_b = -w*, b = w*/c
+      const double b = w.wSonic() / w.c;
+      if (!(b > 0.0)) return {0.0, 0.0, 0.0};
+      const double db = (1.0 / (1.0 + w.g) - b) / (w.ik * w.p);
+      du = -w.c / ((1.0 + w.g) * w.ik * w.p);
+      drho = rho * (1.0 / (gas.gamma * w.p) + db / (w.g * b));
+      dp = pb * (1.0 / w.p + w.ik * db / b);
+    } else {  // subsonic outflow: the face at p0 with the cell's entropy
+      du = -1.0 / (w.rho * w.c);
+      drho = 0.0;
+      dp = 0.0;
+    }
+  } else {
+    const double us = std::sqrt(2.0 * gas.gamma * gas.R * T0 / (gas.gamma + 1.0));
+    if (u >= us * (1.0 - 1e-12)) return {0.0, 0.0, 0.0};  // choked inflow: the reservoir's face
+    const double as = 1.0 - w.g * (w.u - u) / w.c;         // B + G u_b = a s
+    const double Tb = pb / (rho * gas.R);
+    du = -(1.0 / (w.ik * w.p)) / (w.g / w.c + as * u / (2.0 * gas.cp() * Tb));
+    drho = -rho * u / c2 * du;
+    dp = -rho * u * du;
+  }
+  return faceFluxDerivative(gas, f, s.A, du, drho, dp);
 }
 
 FaceState massFlowFace(const PerfectGas& gas, const EndState& s, double mdot, double T0) {

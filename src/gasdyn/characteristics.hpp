@@ -52,6 +52,19 @@ struct FaceSensitivity {
 };
 FaceSensitivity reservoirFaceSensitivity(const PerfectGas& g, const EndState& s, double p0,
                                          double T0, const FaceState& f);
+/// Derivatives of the same flux with respect to the end cell's pressure p [per Pa] at fixed p0,
+/// T0, u_in and cell entropy (an isentropic change: drho = dp/c^2, dc/dp = c/(ik p)); used by
+/// the implicit one-cell pipes (volume.hpp). With the cell's Riemann relations (Wave):
+///  * subsonic outflow: p_b = p0 and rho_b = rho (p0/p)^(1/gamma) stay, du_b/dp = -1/(rho c);
+///  * choked outflow (u_b = -w*, b = w*/c, w* = (c - g u)/(1 + g)):
+///      du_b/dp = -c/((1 + g) ik p),  db/dp = (1/(1 + g) - b)/(ik p),
+///      drho_b/dp = rho_b (1/(gamma p) + db/(g b)),  dp_b/dp = p_b (1/p + ik db/b);
+///  * subsonic inflow (B + G u_b = a s, whose p-derivative at fixed u_b is 1/(ik p) since
+///    a s = 1 + g (u_b - u)/c):  du_b/dp = -(1/(ik p)) / (G + a s u_b/(2 cp T_b)),
+///      drho_b/dp = -rho_b u_b/c_b^2 du_b/dp,  dp_b/dp = -rho_b u_b du_b/dp;
+///  * choked inflow: 0 (the face is the reservoir's).
+FaceSensitivity reservoirFaceCellSensitivity(const PerfectGas& g, const EndState& s, double p0,
+                                             double T0, const FaceState& f);
 
 /// Face carrying mdot_in [kg/s] (>0 into the pipe, supply stagnation temperature T0_in [K];
 /// <0 out of the pipe), capped at the sonic face.

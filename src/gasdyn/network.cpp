@@ -34,6 +34,7 @@ Volume& Network::addReservoir(std::string name, double p, double T) {
 
 void Network::setImplicitVolumes(bool on) {
   implicit_volumes_ = on;
+  validated_ = false;
   for (auto& v : volumes_) v->setImplicit(on);
 }
 
@@ -66,10 +67,25 @@ void Network::validate() {
     if (!p->attached(End::Right))
       throw InputError("network", "pipe " + p->name(), "right end has no boundary");
   }
+  markImplicitCells();
   validated_ = true;
 }
 
+// One-cell FSM pipes with exactly one end on an implicit volume port (the other end's flux then
+// comes from an explicit boundary before the volume closes its ports).
+void Network::markImplicitCells() const {
+  for (auto& p : pipes_) {
+    int ports = 0;
+    for (const auto& v : volumes_)
+      if (v->implicit()) ports += v->portsOf(*p);
+    const bool fsm = p->config().solver == SolverKind::FSM;
+    p->setImplicitCell(implicit_cells_ && ports == 1 && p->cells() == 1 && fsm);
+    p->setSubcycled(fsm && p->cells() >= 2 ? subcycle_cfl_ : 0.0);
+  }
+}
+
 double Network::stableDt(std::string* limiter) const {
+  if (!validated_) markImplicitCells();  // the step as it will be taken, also before the first
   double dt = std::numeric_limits<double>::infinity();
   const std::string* who = nullptr;
   for (const auto& p : pipes_) {

@@ -33,6 +33,14 @@ class Network {
   /// Open ends to finite volumes linearised-implicit in the volume pressure (volume.hpp); applies
   /// to volumes added before and after the call. Default: explicit.
   void setImplicitVolumes(bool on);
+  /// With implicit volumes: every one-cell FSM pipe with one end on a finite volume and an
+  /// explicit boundary at the other end gets an implicit cell (volume.hpp "Implicit one-cell
+  /// pipes"); applied when the network is first stepped. Default: off.
+  void setImplicitOneCellPipes(bool on) { implicit_cells_ = on, validated_ = false; }
+  /// Every pipe of >= 2 FSM cells takes its own CFL sub-steps within the network step, its end
+  /// fluxes held (Pipe::setSubcycled; coupling_cfl > 0, 0: off); applied when the network is
+  /// first stepped.
+  void setSubcycledPipes(double coupling_cfl) { subcycle_cfl_ = coupling_cfl, validated_ = false; }
   /// Adds any boundary (constructed in place); returns it.
   template <class B, class... Args>
   B& add(Args&&... args) {
@@ -68,6 +76,7 @@ class Network {
 
  private:
   void validate();
+  void markImplicitCells() const;  // implicit cells, sub-cycling: flags on the pipes
   void stepOnce(double dt);  // fluxes at t_, then all elements advance by dt (t_ not updated)
   PerfectGas gas_;
   std::vector<std::unique_ptr<Pipe>> pipes_;
@@ -75,7 +84,8 @@ class Network {
   std::vector<std::unique_ptr<Boundary>> boundaries_;
   double t_ = 0.0, last_dt_ = 0.0, dt_floor_ = 1e-9;
   long steps_ = 0;
-  bool validated_ = false, implicit_volumes_ = false;
+  bool validated_ = false, implicit_volumes_ = false, implicit_cells_ = false;
+  double subcycle_cfl_ = 0.0;
 };
 
 }  // namespace hbt::gasdyn

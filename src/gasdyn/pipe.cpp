@@ -1,5 +1,6 @@
 #include "gasdyn/pipe.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -36,11 +37,32 @@ void Pipe::attach(End e, const std::string& boundary) {
 }
 
 double Pipe::maxDt() const {
+  if (implicit_cell_) {  // transport through the one cell: face and centre velocities
+    const double rA = solver_->rho(0) * geo_.A_cell[0];
+    const double s = std::max({std::fabs(solver_->u(0)), std::fabs(flux_[0].mdot_in) / rA,
+                               std::fabs(flux_[1].mdot_in) / rA});
+    return s > 0.0 ? cfg_.cfl * geo_.dx / s : std::numeric_limits<double>::infinity();
+  }
   const double s = solver_->maxWaveSpeed();
-  return s > 0.0 ? cfg_.cfl * geo_.dx / s : std::numeric_limits<double>::infinity();
+  const double cfl = subcycle_cfl_ > 0.0 ? subcycle_cfl_ : cfg_.cfl;
+  return s > 0.0 ? cfl * geo_.dx / s : std::numeric_limits<double>::infinity();
 }
 
 void Pipe::step(double dt) {
+  if (!(subcycle_cfl_ > 0.0)) return solverStep(dt);
+  // own CFL sub-steps, equal within what remains, the end fluxes held
+  double remaining = dt;
+  while (remaining > 0.0) {
+    const double s = solver_->maxWaveSpeed();
+    const double own = s > 0.0 ? cfg_.cfl * geo_.dx / s : remaining;
+    const double n = std::max(1.0, std::ceil(remaining / own * (1.0 - 1e-12)));
+    const double h = n <= 1.0 ? remaining : remaining / n;
+    solverStep(h);
+    remaining = n <= 1.0 ? 0.0 : remaining - h;
+  }
+}
+
+void Pipe::solverStep(double dt) {
   const CellFault f = solver_->step(dt, flux_[0], flux_[1]);
   ++steps_;
   if (f.cell >= 0) {

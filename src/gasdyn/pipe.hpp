@@ -55,11 +55,23 @@ class Pipe {
   bool attached(End e) const { return !owner_[static_cast<int>(e)].empty(); }
 
   // --- time stepping ---
-  double maxDt() const;  // CFL dx / max(|u| + c) [s]
+  /// CFL dx / max(|u| + c) [s]; a pipe with an implicit cell (setImplicitCell): CFL dx / |u|max
+  /// over its cell and end faces (donor-cell transport; its acoustics are implicit, volume.hpp).
+  double maxDt() const;
+  /// One-cell FSM pipe whose pressure is solved implicitly with the volume at one of its ends
+  /// (Network::setImplicitOneCellPipes, volume.hpp "Implicit one-cell pipes").
+  void setImplicitCell(bool on) { implicit_cell_ = on; }
+  bool implicitCell() const { return implicit_cell_; }
+  /// Sub-cycled pipe (coupling_cfl > 0; Network::setSubcycledPipes): step(dt) takes its own CFL
+  /// sub-steps with the end fluxes of the network step held, and maxDt() is the end cells'
+  /// explicit coupling limit coupling_cfl dx/max(|u| + c) instead of its CFL step. 0: off.
+  void setSubcycled(double coupling_cfl) { subcycle_cfl_ = coupling_cfl; }
+  double subcycleCfl() const { return subcycle_cfl_; }
   void step(double dt);
-  long steps() const { return steps_; }
+  long steps() const { return steps_; }  // solver steps (sub-steps of a sub-cycled pipe)
 
  private:
+  void solverStep(double dt);
   PerfectGas gas_;
   PipeConfig cfg_;
   PipeGeometry geo_;
@@ -67,6 +79,8 @@ class Pipe {
   EndFlux flux_[2];
   std::string owner_[2];
   long steps_ = 0;
+  bool implicit_cell_ = false;
+  double subcycle_cfl_ = 0.0;
 };
 
 }  // namespace hbt::gasdyn

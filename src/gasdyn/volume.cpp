@@ -50,9 +50,20 @@ void Volume::closePorts(double dt) {
   double dp = 0.0;
   if (implicit_ && !ports_.empty()) {
     double S = edot_, D = 0.0;
-    for (const VolumePort* q : ports_) {
+    for (VolumePort* q : ports_) {
       S -= q->flux.energy_in;
-      D += q->denergy_dp;
+      if (q->pipe->implicitCell()) {  // header "Implicit one-cell pipes"
+        const PipeGeometry& geo = q->pipe->geometry();
+        const End other = q->end == End::Left ? End::Right : End::Left;
+        const double C = geo.V_cell[0] / ((q->pipe->gas().gamma - 1.0) * dt);
+        const double den = C - std::min(q->denergy_dpc, 0.0);
+        q->cell_alpha = (q->flux.energy_in + q->pipe->endFlux(other).energy_in) / den;
+        q->cell_beta = std::max(q->denergy_dp, 0.0) / den;
+        S -= q->denergy_dpc * q->cell_alpha;
+        D += q->denergy_dp + q->denergy_dpc * q->cell_beta;
+      } else {
+        D += q->denergy_dp;
+      }
     }
     const double k = (gas_.gamma - 1.0) * dt / V_;
     dp = k * S / (1.0 + k * std::max(D, 0.0));
@@ -62,6 +73,12 @@ void Volume::closePorts(double dt) {
     F.mdot_in += q->dmdot_dp * dp;
     F.momentum += q->dmomentum_dp * dp;
     F.energy_in += q->denergy_dp * dp;
+    if (implicit_ && q->pipe->implicitCell()) {
+      const double dpc = q->cell_alpha + q->cell_beta * dp;
+      F.mdot_in += q->dmdot_dpc * dpc;
+      F.momentum += q->dmomentum_dpc * dpc;
+      F.energy_in += q->denergy_dpc * dpc;
+    }
     q->pipe->setEndFlux(q->end, F);
     addFlow(-F.mdot_in, -F.energy_in);
   }

@@ -21,6 +21,17 @@
 // conserved to round-off whatever dp is; the ports then no longer limit the step (the filling
 // mode dp/dt = -(c^2/V) sum_k dmdot_k/dp p is integrated by backward Euler: unconditionally
 // stable, first order, like the explicit update).
+// Implicit one-cell pipes (Network::setImplicitOneCellPipes): a port whose pipe is one FSM cell
+// with an explicit boundary at its other end (a valve, a turbine entry) also takes the cell's
+// new pressure p_c' = p_c + dp_c into its linearisation, F_k + dF_k/dp dp + dF_k/dp_c dp_c_k. The
+// cell's energy balance (V_c/((gamma-1) dt)) dp_c = E_k + G_k (G_k the energy the other end
+// brings in, explicit) gives dp_c_k = alpha_k + beta_k dp with
+//   alpha_k = (E_k + G_k)/(C_k - e_k),  beta_k = d_k/(C_k - e_k),  C_k = V_c/((gamma-1) dt),
+//   d_k = dE_k/dp >= 0, e_k = dE_k/dp_c <= 0,
+// and the volume's balance then has S' = S - sum_k e_k alpha_k, D' = sum_k (d_k + e_k beta_k)
+// = sum_k d_k C_k/(C_k - e_k) >= 0 in place of S, D. The one-cell pipe's acoustic mode (its
+// stable step dx/(|u| + c) when explicit) is then backward Euler; only the transport of mass
+// and energy through the cell limits its step (Pipe::maxDt).
 #pragma once
 #include <string>
 #include <vector>
@@ -36,6 +47,10 @@ struct VolumePort {
   End end = End::Left;
   EndFlux flux;  // into the pipe, at the volume state of the step start (final after closePorts)
   double dmdot_dp = 0.0, dmomentum_dp = 0.0, denergy_dp = 0.0;  // d flux / d p_volume
+  // Implicit one-cell pipe (pipe->implicitCell()): d flux / d p of the pipe's cell (isentropic
+  // change of the end state) [kg/(s Pa)], [m^2], [W/Pa].
+  double dmdot_dpc = 0.0, dmomentum_dpc = 0.0, denergy_dpc = 0.0;
+  double cell_alpha = 0.0, cell_beta = 0.0;  // dp_c = alpha + beta dp of the step [Pa], [-]
 };
 
 class Volume {
@@ -64,6 +79,12 @@ class Volume {
   /// Implicit ports on/off (default off: ports are explicit connections).
   void setImplicit(bool on) { implicit_ = on && !reservoir_; }
   bool implicit() const { return implicit_; }
+  /// Number of this volume's ports on pipe p (0, 1 or 2).
+  int portsOf(const Pipe& p) const {
+    int n = 0;
+    for (const VolumePort* q : ports_) n += q->pipe == &p;
+    return n;
+  }
   /// After all boundaries have computed their fluxes: solves dp (implicit) and gives every port's
   /// final flux to its pipe end and (negated) to this volume.
   void closePorts(double dt);

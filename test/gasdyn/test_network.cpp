@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "gasdyn/cases.hpp"
@@ -68,6 +70,131 @@ TEST(Network, OneCellFsmPipesConserveAndRelax) {
   EXPECT_NEAR(b.p(0), peq, 0.01 * peq);
 }
 
+namespace {
+// Closed network of the engine's kind: three one-cell runners (closed far ends) on a plenum, a
+// 6-cell duct from the plenum to a second volume with one more runner; unequal pressures and
+// temperatures, implicit volume ports.
+struct RunnerNetwork {
+  Network net{hbt::PerfectGas{1.4, 287.0}};
+  std::vector<Pipe*> runners;
+  Pipe* duct = nullptr;
+  Volume* plenum = nullptr;
+  Volume* box = nullptr;
+  RunnerNetwork(bool implicit_cells, double subcycle_cfl) {
+    net.setImplicitVolumes(true);
+    net.setImplicitOneCellPipes(implicit_cells);
+    net.setSubcycledPipes(subcycle_cfl);
+    PipeConfig c;
+    c.length = 0.25, c.cells = 1, c.friction_darcy = 0.03;
+    c.diameter_left = c.diameter_right = 0.045;
+    const double p[] = {2.0e5, 1.0e5, 1.5e5, 0.9e5}, T[] = {300.0, 350.0, 400.0, 320.0};
+    for (int k = 0; k < 4; ++k) {
+      c.name = "runner_" + std::to_string(k + 1);
+      runners.push_back(&net.addPipe(c));
+      runners.back()->setUniform(p[k], T[k]);
+    }
+    c.name = "duct", c.length = 2.0, c.cells = 6, c.diameter_left = c.diameter_right = 0.075;
+    duct = &net.addPipe(c);
+    duct->setUniform(1.2e5, 300.0);
+    plenum = &net.addVolume("plenum", 5e-3, 1.1e5, 310.0);
+    box = &net.addVolume("box", 1e-3, 1.0e5, 300.0);
+    for (int k = 0; k < 3; ++k) {
+      net.close(*runners[k], End::Left);
+      net.connect(*runners[k], End::Right, *plenum);
+    }
+    net.connect(*duct, End::Left, *plenum);
+    net.connect(*duct, End::Right, *box);
+    net.connect(*runners[3], End::Left, *box);
+    net.close(*runners[3], End::Right);
+  }
+  double volume() const {
+    double V = plenum->volume() + box->volume();
+    for (const auto& q : net.pipes())
+      for (double v : q->geometry().V_cell) V += v;
+    return V;
+  }
+};
+}  // namespace
+
+TEST(Network, ImplicitOneCellPipesAndSubcycledPipesConserveAndRelax) {
+  // The runners' acoustics implicit with their volume, the duct sub-cycled: the step is the
+  // duct's end-cell coupling limit (1.5 dx/(|u| + c)), ~2x the runners' explicit CFL step;
+  // mass and energy stay conserved to round-off and the network relaxes to p_eq.
+  RunnerNetwork n(true, 1.5);
+  const double m0 = n.net.totalMass(), e0 = n.net.totalEnergy();
+  const double peq = 0.4 * e0 / n.volume();
+  std::string who;
+  const double dt = n.net.stableDt(&who);
+  const Pipe& r = *n.runners[0];
+  const double runner_cfl_dt = r.config().cfl * r.dx() / (std::abs(r.u(0)) + std::sqrt(1.4 * r.p(0) / r.rho(0)));
+  std::printf("[implicit cells] step %.3f ms set by %s; runner's explicit CFL step %.3f ms\n",
+              1e3 * dt, who.c_str(), 1e3 * runner_cfl_dt);
+  EXPECT_EQ(who, "duct");
+  EXPECT_GT(dt, 1.5 * runner_cfl_dt);
+  n.net.advance(2.0);
+  const double dm = n.net.totalMass() / m0 - 1.0, de = n.net.totalEnergy() / e0 - 1.0;
+  std::printf("[implicit cells] %ld network steps, duct %ld solver steps, mass drift %.2e, energy "
+              "drift %.2e, p_eq %.1f Pa, plenum %.1f, runner_1 %.1f, runner_4 %.1f\n",
+              n.net.steps(), n.duct->steps(), dm, de, peq, n.plenum->p(), r.p(0),
+              n.runners[3]->p(0));
+  EXPECT_LT(std::abs(dm), 1e-12);
+  EXPECT_LT(std::abs(de), 1e-12);
+  EXPECT_GT(n.duct->steps(), n.net.steps());  // sub-cycled: its own CFL steps
+  EXPECT_EQ(r.steps(), n.net.steps());
+  for (const Pipe* q : n.runners) EXPECT_NEAR(q->p(0), peq, 0.01 * peq) << q->name();
+  EXPECT_NEAR(n.plenum->p(), peq, 0.01 * peq);
+  EXPECT_NEAR(n.box->p(), peq, 0.01 * peq);
+}
+
+TEST(Network, ImplicitOneCellPipeDecaysAtAnyStep) {
+  // A one-cell runner (closed far end) on a plenum, nothing else. Explicit, its acoustic CFL
+  // step splits every 5 ms into >= 7 steps; with its cell implicit only the transport limit
+  // remains and every 5 ms is one network step. The pressure deviation (the cell's filling mode
+  // with its explicit momentum) then decays by >= 2x every 5 steps down to round-off, and the
+  // network keeps its mass and energy.
+  auto build = [](Network& net, bool implicit_cell) {
+    net.setImplicitVolumes(true);
+    net.setImplicitOneCellPipes(implicit_cell);
+    PipeConfig c;
+    c.name = "runner", c.length = 0.25, c.cells = 1, c.friction_darcy = 0.03;
+    c.diameter_left = c.diameter_right = 0.045;
+    Pipe& r = net.addPipe(c);
+    r.setUniform(1.6e5, 330.0);
+    Volume& pl = net.addVolume("plenum", 2e-3, 1.0e5, 300.0);
+    net.close(r, End::Left);
+    net.connect(r, End::Right, pl);
+    return &r;
+  };
+  Network expl(hbt::PerfectGas{1.4, 287.0});
+  build(expl, false);
+  expl.advance(5e-3);
+  EXPECT_GE(expl.steps(), 7);
+  Network net(hbt::PerfectGas{1.4, 287.0});
+  const Pipe& r = *build(net, true);
+  const double m0 = net.totalMass(), e0 = net.totalEnergy();
+  const double peq = 0.4 * e0 / (net.volumes()[0]->volume() + r.geometry().V_cell[0]);
+  const double dev0 = std::abs(r.p(0) - peq);
+  double window_prev = dev0, window = 0.0;
+  for (int k = 1; k <= 100; ++k) {
+    const long before = net.steps();
+    net.advance(5e-3);
+    EXPECT_EQ(net.steps() - before, 1) << "step " << k;
+    window = std::max(window, std::abs(r.p(0) - peq));
+    if (k % 5 == 0) {
+      if (window_prev > 1e-9 * peq) {
+        EXPECT_LT(window, 0.5 * window_prev) << "steps to " << k;
+      }
+      window_prev = window;
+      window = 0.0;
+    }
+  }
+  std::printf("[implicit cell alone] explicit: %ld steps per 5 ms; implicit: deviation %.1f -> "
+              "%.2e Pa after 0.5 s in 5 ms steps\n", expl.steps(), dev0, window_prev);
+  EXPECT_LT(window_prev, 1e-9 * peq);
+  EXPECT_LT(std::abs(net.totalMass() / m0 - 1.0), 1e-12);
+  EXPECT_LT(std::abs(net.totalEnergy() / e0 - 1.0), 1e-12);
+}
+
 TEST(Network, ReservoirFaceSensitivityMatchesFiniteDifference) {
   // d(flux into the pipe)/d p0 of reservoirFace against central differences, in the four
   // regimes: subsonic / choked outflow, subsonic / choked inflow.
@@ -93,6 +220,52 @@ TEST(Network, ReservoirFaceSensitivityMatchesFiniteDifference) {
     EXPECT_NEAR(d.dmdot, dm, 1e-5 * sm) << cs.name;
     EXPECT_NEAR(d.dmomentum, dM, 1e-5 * sM) << cs.name;
     EXPECT_NEAR(d.denergy, dE, 1e-5 * sE) << cs.name;
+  }
+}
+
+TEST(Network, ReservoirFaceCellSensitivityMatchesFiniteDifference) {
+  // d(flux into the pipe)/d p of the end cell (isentropic change of the cell, u and entropy
+  // fixed) against central differences, in the four regimes, for air and exhaust gas.
+  struct Case { double p0, u; const char* name; };
+  for (const hbt::PerfectGas g : {hbt::PerfectGas{1.4, 287.0}, hbt::PerfectGas{1.33, 290.0}}) {
+    const EndState base{1.5, 30.0, 1.6e5, 2e-3};
+    for (const Case cs : {Case{1.4e5, 30.0, "subsonic outflow"}, Case{0.3e5, 0.0, "choked outflow"},
+                          Case{1.9e5, -20.0, "subsonic inflow"}, Case{4.0e6, 0.0, "choked inflow"}}) {
+      EndState s = base;
+      s.u_in = cs.u;
+      const double T0 = 420.0, h = 1e-6 * s.p;
+      auto cell = [&](double p) {  // same u and entropy: rho ~ p^(1/gamma)
+        EndState e = s;
+        e.p = p;
+        e.rho = s.rho * std::pow(p / s.p, 1.0 / g.gamma);
+        return e;
+      };
+      const FaceState f = reservoirFace(g, s, cs.p0, T0);
+      const FaceSensitivity d = reservoirFaceCellSensitivity(g, s, cs.p0, T0, f);
+      const FaceState fp = reservoirFace(g, cell(s.p + h), cs.p0, T0);
+      const FaceState fm = reservoirFace(g, cell(s.p - h), cs.p0, T0);
+      const EndFlux Fp = faceFlux(g, fp.rho, fp.u_in, fp.p, s.A);
+      const EndFlux Fm = faceFlux(g, fm.rho, fm.u_in, fm.p, s.A);
+      const double dm = (Fp.mdot_in - Fm.mdot_in) / (2 * h);
+      const double dM = (Fp.momentum - Fm.momentum) / (2 * h);
+      const double dE = (Fp.energy_in - Fm.energy_in) / (2 * h);
+      std::printf("[cell sensitivity gamma %.2f %s] u_b %.1f m/s: dmdot %.4e (fd %.4e), dmom %.4e "
+                  "(fd %.4e), denergy %.4e (fd %.4e)\n", g.gamma, cs.name, f.u_in, d.dmdot, dm,
+                  d.dmomentum, dM, d.denergy, dE);
+      const double sm = std::abs(dm) + 1e-12, sM = std::abs(dM) + 1e-9, sE = std::abs(dE) + 1e-6;
+      EXPECT_NEAR(d.dmdot, dm, 1e-5 * sm) << cs.name;
+      EXPECT_NEAR(d.dmomentum, dM, 1e-5 * sM) << cs.name;
+      EXPECT_NEAR(d.denergy, dE, 1e-5 * sE) << cs.name;
+      // physical signs: a higher cell pressure pushes more gas out, lets less in; a choked
+      // inflow face is the reservoir's sonic state, whatever the cell
+      const double u_sonic = std::sqrt(2.0 * g.gamma * g.R * T0 / (g.gamma + 1.0));
+      if (std::string(cs.name) == "choked inflow") {
+        EXPECT_NEAR(f.u_in, u_sonic, 1e-9 * u_sonic);
+        EXPECT_EQ(d.dmdot, 0.0);
+      } else {
+        EXPECT_LT(d.dmdot, 0.0) << cs.name;
+      }
+    }
   }
 }
 
