@@ -222,6 +222,9 @@ void Engine1DParams::validate() const {
   if (e.solver != "fsm" && e.solver != "tvd")
     throw InputError(f, "engine_1d/solver", "must be 'fsm' or 'tvd', got '" + e.solver + "'");
   validateCylinders(e, f);
+  if (e.implicit_one_cell_pipes && !e.implicit_volumes)
+    throw InputError(f, "engine_1d/numerics/implicit_one_cell_pipes",
+                     "needs numerics/implicit_volumes: true (the cells are solved with their volume)");
   for (const auto* v : {&e.intake_valve, &e.exhaust_valve}) {
     const std::string k = v == &e.intake_valve ? "engine_1d/valves/intake" : "engine_1d/valves/exhaust";
     if (v->ld.size() < 2 || v->cd_normal.size() != v->ld.size() || v->cd_back.size() != v->ld.size())

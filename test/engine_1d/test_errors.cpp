@@ -50,6 +50,10 @@ TEST(Engine1DErrors, UnknownKeyAndBadSolverAreRejected) {
   hbt::testing::expectInputError([&] { Engine1DParams::load(repoRoot(), g); }, g, "engine_1d/solver");
   const std::string h = writeVariant("cd_normal: [0.72, 0.70, 0.67", "cd_normal: [0.70, 0.67", "cd");
   EXPECT_THROW(Engine1DParams::load(repoRoot(), h), hbt::InputError);
+  // implicit one-cell pipes are solved with their implicit volume: without it, an error
+  const std::string i = writeVariant("implicit_volumes: true", "implicit_volumes: false", "implicit");
+  hbt::testing::expectInputError([&] { Engine1DParams::load(repoRoot(), i); }, i,
+                                 "engine_1d/numerics/implicit_one_cell_pipes");
 }
 
 TEST(Engine1DErrors, CylinderCountFiringOrderAndBanksAreCheckedAtLoad) {
