@@ -195,67 +195,61 @@ TEST(Network, ImplicitOneCellPipeDecaysAtAnyStep) {
   EXPECT_LT(std::abs(net.totalEnergy() / e0 - 1.0), 1e-12);
 }
 
+namespace {
+// Central differences (step h) of the flux into the pipe through the face face(x) at x.
+template <class Face>
+FaceSensitivity centralDifference(const hbt::PerfectGas& g, double A, Face face, double x, double h) {
+  const FaceState fp = face(x + h), fm = face(x - h);
+  const EndFlux Fp = faceFlux(g, fp.rho, fp.u_in, fp.p, A), Fm = faceFlux(g, fm.rho, fm.u_in, fm.p, A);
+  return {(Fp.mdot_in - Fm.mdot_in) / (2 * h), (Fp.momentum - Fm.momentum) / (2 * h),
+          (Fp.energy_in - Fm.energy_in) / (2 * h)};
+}
+void expectNearSensitivity(const FaceSensitivity& d, const FaceSensitivity& fd, const std::string& what) {
+  std::printf("[%s] dmdot %.4e (fd %.4e), dmom %.4e (fd %.4e), denergy %.4e (fd %.4e)\n",
+              what.c_str(), d.dmdot, fd.dmdot, d.dmomentum, fd.dmomentum, d.denergy, fd.denergy);
+  EXPECT_NEAR(d.dmdot, fd.dmdot, 1e-5 * (std::abs(fd.dmdot) + 1e-12)) << what;
+  EXPECT_NEAR(d.dmomentum, fd.dmomentum, 1e-5 * (std::abs(fd.dmomentum) + 1e-9)) << what;
+  EXPECT_NEAR(d.denergy, fd.denergy, 1e-5 * (std::abs(fd.denergy) + 1e-6)) << what;
+}
+// The four regimes of reservoirFace at a 1.6 bar end cell (p0 [Pa], u_in [m/s]).
+struct FaceCase { double p0, u; const char* name; };
+constexpr FaceCase kFaceCases[] = {{1.4e5, 30.0, "subsonic outflow"}, {0.3e5, 0.0, "choked outflow"},
+                                   {1.9e5, -20.0, "subsonic inflow"}, {4.0e6, 0.0, "choked inflow"}};
+}  // namespace
+
 TEST(Network, ReservoirFaceSensitivityMatchesFiniteDifference) {
   // d(flux into the pipe)/d p0 of reservoirFace against central differences, in the four
   // regimes: subsonic / choked outflow, subsonic / choked inflow.
   const hbt::PerfectGas g{1.35, 290.0};
-  struct Case { double p0, u; const char* name; };
-  const EndState base{1.5, 30.0, 1.6e5, 2e-3};
-  for (const Case cs : {Case{1.4e5, 30.0, "subsonic outflow"}, Case{0.3e5, 0.0, "choked outflow"},
-                        Case{1.9e5, -20.0, "subsonic inflow"}, Case{6.0e5, 0.0, "choked inflow"}}) {
-    EndState s = base;
-    s.u_in = cs.u;
-    const double T0 = 420.0, h = 1e-6 * cs.p0;
+  for (const FaceCase& cs : kFaceCases) {
+    EndState s{1.5, cs.u, 1.6e5, 2e-3};
+    const double T0 = 420.0;
     const FaceState f = reservoirFace(g, s, cs.p0, T0);
-    const FaceSensitivity d = reservoirFaceSensitivity(g, s, cs.p0, T0, f);
-    const FaceState fp = reservoirFace(g, s, cs.p0 + h, T0), fm = reservoirFace(g, s, cs.p0 - h, T0);
-    const EndFlux Fp = faceFlux(g, fp.rho, fp.u_in, fp.p, s.A);
-    const EndFlux Fm = faceFlux(g, fm.rho, fm.u_in, fm.p, s.A);
-    const double dm = (Fp.mdot_in - Fm.mdot_in) / (2 * h), dM = (Fp.momentum - Fm.momentum) / (2 * h);
-    const double dE = (Fp.energy_in - Fm.energy_in) / (2 * h);
-    std::printf("[sensitivity %s] u_b %.1f m/s: dmdot %.4e (fd %.4e), dmom %.4e (fd %.4e), "
-                "denergy %.4e (fd %.4e)\n", cs.name, f.u_in, d.dmdot, dm, d.dmomentum, dM,
-                d.denergy, dE);
-    const double sm = std::abs(dm) + 1e-12, sM = std::abs(dM) + 1e-9, sE = std::abs(dE) + 1e-6;
-    EXPECT_NEAR(d.dmdot, dm, 1e-5 * sm) << cs.name;
-    EXPECT_NEAR(d.dmomentum, dM, 1e-5 * sM) << cs.name;
-    EXPECT_NEAR(d.denergy, dE, 1e-5 * sE) << cs.name;
+    const FaceSensitivity fd = centralDifference(
+        g, s.A, [&](double p0) { return reservoirFace(g, s, p0, T0); }, cs.p0, 1e-6 * cs.p0);
+    expectNearSensitivity(reservoirFaceSensitivity(g, s, cs.p0, T0, f), fd,
+                          std::string("sensitivity ") + cs.name);
   }
 }
 
 TEST(Network, ReservoirFaceCellSensitivityMatchesFiniteDifference) {
   // d(flux into the pipe)/d p of the end cell (isentropic change of the cell, u and entropy
   // fixed) against central differences, in the four regimes, for air and exhaust gas.
-  struct Case { double p0, u; const char* name; };
   for (const hbt::PerfectGas g : {hbt::PerfectGas{1.4, 287.0}, hbt::PerfectGas{1.33, 290.0}}) {
-    const EndState base{1.5, 30.0, 1.6e5, 2e-3};
-    for (const Case cs : {Case{1.4e5, 30.0, "subsonic outflow"}, Case{0.3e5, 0.0, "choked outflow"},
-                          Case{1.9e5, -20.0, "subsonic inflow"}, Case{4.0e6, 0.0, "choked inflow"}}) {
-      EndState s = base;
-      s.u_in = cs.u;
-      const double T0 = 420.0, h = 1e-6 * s.p;
-      auto cell = [&](double p) {  // same u and entropy: rho ~ p^(1/gamma)
+    for (const FaceCase& cs : kFaceCases) {
+      const EndState s{1.5, cs.u, 1.6e5, 2e-3};
+      const double T0 = 420.0;
+      auto face = [&](double p) {  // the cell at p, same u and entropy: rho ~ p^(1/gamma)
         EndState e = s;
         e.p = p;
         e.rho = s.rho * std::pow(p / s.p, 1.0 / g.gamma);
-        return e;
+        return reservoirFace(g, e, cs.p0, T0);
       };
       const FaceState f = reservoirFace(g, s, cs.p0, T0);
       const FaceSensitivity d = reservoirFaceCellSensitivity(g, s, cs.p0, T0, f);
-      const FaceState fp = reservoirFace(g, cell(s.p + h), cs.p0, T0);
-      const FaceState fm = reservoirFace(g, cell(s.p - h), cs.p0, T0);
-      const EndFlux Fp = faceFlux(g, fp.rho, fp.u_in, fp.p, s.A);
-      const EndFlux Fm = faceFlux(g, fm.rho, fm.u_in, fm.p, s.A);
-      const double dm = (Fp.mdot_in - Fm.mdot_in) / (2 * h);
-      const double dM = (Fp.momentum - Fm.momentum) / (2 * h);
-      const double dE = (Fp.energy_in - Fm.energy_in) / (2 * h);
-      std::printf("[cell sensitivity gamma %.2f %s] u_b %.1f m/s: dmdot %.4e (fd %.4e), dmom %.4e "
-                  "(fd %.4e), denergy %.4e (fd %.4e)\n", g.gamma, cs.name, f.u_in, d.dmdot, dm,
-                  d.dmomentum, dM, d.denergy, dE);
-      const double sm = std::abs(dm) + 1e-12, sM = std::abs(dM) + 1e-9, sE = std::abs(dE) + 1e-6;
-      EXPECT_NEAR(d.dmdot, dm, 1e-5 * sm) << cs.name;
-      EXPECT_NEAR(d.dmomentum, dM, 1e-5 * sM) << cs.name;
-      EXPECT_NEAR(d.denergy, dE, 1e-5 * sE) << cs.name;
+      char what[64];
+      std::snprintf(what, sizeof what, "cell sensitivity gamma %.2f %s", g.gamma, cs.name);
+      expectNearSensitivity(d, centralDifference(g, s.A, face, s.p, 1e-6 * s.p), what);
       // physical signs: a higher cell pressure pushes more gas out, lets less in; a choked
       // inflow face is the reservoir's sonic state, whatever the cell
       const double u_sonic = std::sqrt(2.0 * g.gamma * g.R * T0 / (g.gamma + 1.0));
