@@ -52,15 +52,15 @@ void Volume::closePorts(double dt) {
     double S = edot_, D = 0.0;
     for (VolumePort* q : ports_) {
       S -= q->flux.energy_in;
-      if (q->pipe->implicitCell()) {  // header "Implicit one-cell pipes"
+      if (q->pipe->implicitCell()) {  // header "Implicit one-cell pipes": d >= 0, e <= 0
         const PipeGeometry& geo = q->pipe->geometry();
         const End other = q->end == End::Left ? End::Right : End::Left;
         const double C = geo.V_cell[0] / ((q->pipe->gas().gamma - 1.0) * dt);
-        const double den = C - std::min(q->denergy_dpc, 0.0);
-        q->cell_alpha = (q->flux.energy_in + q->pipe->endFlux(other).energy_in) / den;
-        q->cell_beta = std::max(q->denergy_dp, 0.0) / den;
-        S -= q->denergy_dpc * q->cell_alpha;
-        D += q->denergy_dp + q->denergy_dpc * q->cell_beta;
+        const double d = std::max(q->denergy_dp, 0.0), e = std::min(q->denergy_dpc, 0.0);
+        q->cell_alpha = (q->flux.energy_in + q->pipe->endFlux(other).energy_in) / (C - e);
+        q->cell_beta = d / (C - e);
+        S -= e * q->cell_alpha;
+        D += d + e * q->cell_beta;
       } else {
         D += q->denergy_dp;
       }
